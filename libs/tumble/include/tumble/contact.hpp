@@ -1,0 +1,67 @@
+// Contacts of a cuboid with the ground plane, as detection reports them and as users see them.
+#pragma once
+
+#include "tumble/body_id.hpp"
+#include "tumble/math.hpp"
+
+#include <array>
+#include <cstdint>
+
+namespace tumble {
+
+/// What touches the ground, named by the number of touching vertices as in the handouts:
+/// 1 vertex, 2 an edge, 4 a face (3 vertices within the tolerance also mean a face).
+enum class ContactFeature : std::uint8_t { None = 0, Vertex = 1, Edge = 2, Face = 4 };
+
+/// "none", "vertex", "edge" or "face".
+const char* featureName(ContactFeature feature);
+
+/// One cuboid vertex touching or below the ground.
+struct ContactPoint {
+    /// Index of the vertex (see cuboidVertices).
+    int vertex = 0;
+    /// World coordinates of the vertex, m.
+    Vec3 position{0.0};
+    /// How far the vertex is below the plane, m (negative: above it, within the tolerance).
+    Real penetration = 0.0;
+    /// Impulse along the normal the solver applied at this point in the reported event, N s.
+    Real normalImpulse = 0.0;
+    /// Tangential (friction) impulse applied at this point in the reported event, N s.
+    Vec3 frictionImpulse{0.0};
+};
+
+/// The vertices of one cuboid that touch the ground (within a tolerance).
+struct ContactManifold {
+    BodyId body{};
+    /// Ground normal, pointing into the body's side of the plane.
+    Vec3 normal{0.0, 1.0, 0.0};
+    std::array<ContactPoint, 8> points{};
+    int pointCount = 0;
+
+    /// Vertex, edge or face, from the number of touching vertices.
+    [[nodiscard]] ContactFeature feature() const;
+    /// Mean of the touching vertices' world coordinates (origin when there are none).
+    [[nodiscard]] Vec3 averagePoint() const;
+    /// Largest penetration of any touching vertex, m (0 when there are none).
+    [[nodiscard]] Real maxPenetration() const;
+};
+
+/// An impact of a body on the ground: the contact and the impulses that resolved it.
+struct CollisionEvent {
+    /// Simulated time of the impact, s.
+    Real time = 0.0;
+    ContactManifold manifold{};
+    /// Most negative normal velocity of a touching vertex before the impact, m/s.
+    Real approachSpeed = 0.0;
+    /// Sum of the normal impulses, world frame, N s.
+    Vec3 normalImpulse{0.0};
+    /// Sum of the friction impulses, world frame, N s.
+    Vec3 frictionImpulse{0.0};
+    /// False when the approach was slower than the restitution threshold (a plastic impact).
+    bool restitutionApplied = false;
+    /// Kinetic energy just before and just after the impact, J.
+    Real kineticEnergyBefore = 0.0;
+    Real kineticEnergyAfter = 0.0;
+};
+
+} // namespace tumble

@@ -1,0 +1,11 @@
+// Umbrella include: the whole public API of the tumble library.
+#pragma once
+
+#include "tumble/body.hpp"
+#include "tumble/body_id.hpp"
+#include "tumble/contact.hpp"
+#include "tumble/impulse_target.hpp"
+#include "tumble/material.hpp"
+#include "tumble/math.hpp"
+#include "tumble/shape.hpp"
+#include "tumble/world.hpp"

@@ -1,0 +1,284 @@
+// Sequential impulses at the touching vertices of one cuboid (Catto 2005/2014; Mirtich 1996).
+#include "dynamics/contact_solver.hpp"
+
+#include "body_state.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <span>
+
+namespace tumble {
+
+namespace {
+
+/// Below this sliding speed a vertex sticks, and the static coefficient bounds its friction, m/s.
+constexpr Real kStickingSpeed = 1e-3;
+/// A solve has converged when no impulse changed by more than this fraction of the largest.
+constexpr Real kConvergence = 1e-13;
+
+/// Per-vertex data of a solve: the offset, the effective masses and the accumulated impulses
+/// (symbols of docs/physics/05-normal-impulse.md and 06-friction.md).
+struct SolverPoint {
+    Vec3 r{0.0};
+    Real normalMass = 0.0;
+    /// The 2x2 tangential matrix K_t (6.3) and its inverse, the effective mass; row-major.
+    std::array<Real, 4> tangentK{};
+    std::array<Real, 4> tangentMass{};
+    /// Target normal velocity: -e vn^- for an impact faster than the threshold, else 0 (5.3).
+    Real targetNormalVelocity = 0.0;
+    Real friction = 0.0;
+    Real normalImpulse = 0.0;
+    Real tangentImpulse1 = 0.0;
+    Real tangentImpulse2 = 0.0;
+};
+
+struct SolverFrame {
+    Vec3 n{0.0, 1.0, 0.0};
+    Vec3 t1{1.0, 0.0, 0.0};
+    Vec3 t2{0.0, 0.0, 1.0};
+};
+
+SolverFrame makeFrame(const Vec3& normal)
+{
+    SolverFrame frame;
+    frame.n = normal;
+    orthonormalBasis(normal, frame.t1, frame.t2);
+    return frame;
+}
+
+SolverPoint preparePoint(const Body& body, const SolverFrame& frame, const Vec3& r,
+                         Real restitution, Real restitutionThreshold)
+{
+    SolverPoint point;
+    point.r = r;
+    const Mat3& invInertia = body.invInertiaWorld;
+    // (5.2): K_n = 1/m + (r x n) . I^-1 (r x n).
+    const Vec3 rn = glm::cross(r, frame.n);
+    point.normalMass = 1.0 / (body.invMass + glm::dot(rn, invInertia * rn));
+    // (6.3): K_t,ab = delta_ab/m + (r x t_a) . I^-1 (r x t_b), inverted in closed form.
+    const Vec3 r1 = glm::cross(r, frame.t1);
+    const Vec3 r2 = glm::cross(r, frame.t2);
+    const Real k11 = body.invMass + glm::dot(r1, invInertia * r1);
+    const Real k22 = body.invMass + glm::dot(r2, invInertia * r2);
+    const Real k12 = glm::dot(r1, invInertia * r2);
+    const Real invDeterminant = 1.0 / (k11 * k22 - k12 * k12);
+    point.tangentK = {k11, k12, k12, k22};
+    point.tangentMass = {k22 * invDeterminant, -k12 * invDeterminant, -k12 * invDeterminant,
+                         k11 * invDeterminant};
+
+    const Vec3 velocity = body.linearVelocity + glm::cross(body.angularVelocity, r);
+    const Real normalVelocity = glm::dot(frame.n, velocity);
+    if (normalVelocity < -restitutionThreshold) {
+        point.targetNormalVelocity = -restitution * normalVelocity;
+    }
+    const Vec3 sliding = velocity - normalVelocity * frame.n;
+    point.friction = glm::length(sliding) < kStickingSpeed
+                         ? body.material.staticFrictionOrKinetic()
+                         : body.material.friction;
+    return point;
+}
+
+/// Gauss-Seidel over the points, friction then normal at each (normal last so non-penetration
+/// wins), accumulated impulses clamped to the cone |lambda_t| <= mu lambda_n (6.2) and
+/// lambda_n >= 0 (5.4). `targetScale` scales every restitution target (5.6).
+void solvePoints(Body& body, const SolverFrame& frame, std::span<SolverPoint> points,
+                 Real targetScale, int iterations)
+{
+    for (int iteration = 0; iteration < iterations; ++iteration) {
+        Real largestChange = 0.0;
+        Real largestImpulse = 0.0;
+        for (SolverPoint& point : points) {
+            Vec3 velocity = body.linearVelocity + glm::cross(body.angularVelocity, point.r);
+            const Real v1 = glm::dot(frame.t1, velocity);
+            const Real v2 = glm::dot(frame.t2, velocity);
+            Real candidate1 = point.tangentImpulse1 -
+                              (point.tangentMass[0] * v1 + point.tangentMass[1] * v2);
+            Real candidate2 = point.tangentImpulse2 -
+                              (point.tangentMass[2] * v1 + point.tangentMass[3] * v2);
+            const Real bound = point.friction * point.normalImpulse;
+            if (std::hypot(candidate1, candidate2) > bound) {
+                // Sliding: the friction is the largest the cone allows, opposite the velocity the
+                // point would slide with if this point's friction were removed (maximal
+                // dissipation, (6.4)). Clamping the candidate vector instead would tilt it off
+                // the sliding direction through the coupling in K_t.
+                const Real free1 = v1 - (point.tangentK[0] * point.tangentImpulse1 +
+                                         point.tangentK[1] * point.tangentImpulse2);
+                const Real free2 = v2 - (point.tangentK[2] * point.tangentImpulse1 +
+                                         point.tangentK[3] * point.tangentImpulse2);
+                const Real freeSpeed = std::hypot(free1, free2);
+                const Real scale = freeSpeed > 0.0 ? bound / freeSpeed : 0.0;
+                candidate1 = -scale * free1;
+                candidate2 = -scale * free2;
+            }
+            const Real change1 = candidate1 - point.tangentImpulse1;
+            const Real change2 = candidate2 - point.tangentImpulse2;
+            point.tangentImpulse1 = candidate1;
+            point.tangentImpulse2 = candidate2;
+            applyImpulseAtOffset(body, change1 * frame.t1 + change2 * frame.t2, point.r);
+
+            velocity = body.linearVelocity + glm::cross(body.angularVelocity, point.r);
+            const Real normalVelocity = glm::dot(frame.n, velocity);
+            const Real target = targetScale * point.targetNormalVelocity;
+            const Real candidate =
+                std::max(0.0, point.normalImpulse + point.normalMass * (target - normalVelocity));
+            const Real change = candidate - point.normalImpulse;
+            point.normalImpulse = candidate;
+            applyImpulseAtOffset(body, change * frame.n, point.r);
+
+            largestChange = std::max({largestChange, std::abs(change), std::abs(change1),
+                                      std::abs(change2)});
+            largestImpulse = std::max(largestImpulse, point.normalImpulse);
+        }
+        if (largestChange <= kConvergence * largestImpulse) {
+            break;
+        }
+    }
+}
+
+struct PreparedSolve {
+    SolverFrame frame;
+    std::array<SolverPoint, 8> points{};
+    int count = 0;
+};
+
+PreparedSolve prepare(const Body& body, const ContactManifold& manifold, Real restitution,
+                      Real restitutionThreshold)
+{
+    PreparedSolve solve;
+    solve.frame = makeFrame(manifold.normal);
+    for (int i = 0; i < manifold.pointCount; ++i) {
+        solve.points[solve.count++] =
+            preparePoint(body, solve.frame, manifold.points[i].position - body.position,
+                         restitution, restitutionThreshold);
+    }
+    return solve;
+}
+
+/// Copies the accumulated impulses into the manifold and sums them into the outcome.
+void publish(const PreparedSolve& solve, ContactManifold& manifold, ImpactOutcome& outcome)
+{
+    outcome.normalImpulse = Vec3(0.0);
+    outcome.frictionImpulse = Vec3(0.0);
+    for (int i = 0; i < solve.count; ++i) {
+        const SolverPoint& point = solve.points[i];
+        manifold.points[i].normalImpulse = point.normalImpulse;
+        manifold.points[i].frictionImpulse =
+            point.tangentImpulse1 * solve.frame.t1 + point.tangentImpulse2 * solve.frame.t2;
+        outcome.normalImpulse += point.normalImpulse * solve.frame.n;
+        outcome.frictionImpulse += manifold.points[i].frictionImpulse;
+    }
+}
+
+} // namespace
+
+Real approachSpeed(const Body& body, const ContactManifold& manifold)
+{
+    Real fastest = 0.0;
+    for (int i = 0; i < manifold.pointCount; ++i) {
+        const Real normalVelocity =
+            glm::dot(manifold.normal, body.velocityAt(manifold.points[i].position));
+        fastest = std::max(fastest, -normalVelocity);
+    }
+    return fastest;
+}
+
+ImpactOutcome resolveImpact(Body& body, ContactManifold& manifold,
+                            const ContactSolveSettings& settings)
+{
+    ImpactOutcome outcome;
+    outcome.approachSpeed = approachSpeed(body, manifold);
+    outcome.kineticEnergyBefore = body.kineticEnergy();
+    const Vec3 velocityBefore = body.linearVelocity;
+    const Vec3 angularVelocityBefore = body.angularVelocity;
+    const PreparedSolve prepared =
+        prepare(body, manifold, body.material.restitution, settings.restitutionThreshold);
+    for (int i = 0; i < prepared.count; ++i) {
+        outcome.restitutionApplied |= prepared.points[i].targetNormalVelocity > 0.0;
+    }
+
+    PreparedSolve solve = prepared;
+    solvePoints(body, solve.frame, std::span(solve.points.data(), solve.count), 1.0,
+                settings.iterations);
+    // (5.6): Newton's law at several points, or with sticking friction, can create energy. If it
+    // did, scale the restitution targets down (bisection) to the largest that does not.
+    const Real allowed = outcome.kineticEnergyBefore * (1.0 + 1e-12);
+    if (body.kineticEnergy() > allowed) {
+        Real keep = 0.0;
+        Real reject = 1.0;
+        for (int halving = 0; halving < 40; ++halving) {
+            const Real scale = 0.5 * (keep + reject);
+            body.linearVelocity = velocityBefore;
+            body.angularVelocity = angularVelocityBefore;
+            solve = prepared;
+            solvePoints(body, solve.frame, std::span(solve.points.data(), solve.count), scale,
+                        settings.iterations);
+            (body.kineticEnergy() > allowed ? reject : keep) = scale;
+        }
+        body.linearVelocity = velocityBefore;
+        body.angularVelocity = angularVelocityBefore;
+        solve = prepared;
+        solvePoints(body, solve.frame, std::span(solve.points.data(), solve.count), keep,
+                    settings.iterations);
+    }
+    publish(solve, manifold, outcome);
+    outcome.kineticEnergyAfter = body.kineticEnergy();
+    return outcome;
+}
+
+void solveRestingContact(Body& body, ContactManifold& manifold, const ContactSolveSettings& settings)
+{
+    // Restitution 0: resting contact only cancels approach (5.5).
+    PreparedSolve solve = prepare(body, manifold, 0.0, settings.restitutionThreshold);
+    solvePoints(body, solve.frame, std::span(solve.points.data(), solve.count), 0.0,
+                settings.iterations);
+    ImpactOutcome unused;
+    publish(solve, manifold, unused);
+}
+
+ImpactOutcome resolveAverageContact(Body& body, const ContactManifold& manifold,
+                                    const ContactSolveSettings& settings)
+{
+    ImpactOutcome outcome;
+    outcome.kineticEnergyBefore = body.kineticEnergy();
+    outcome.kineticEnergyAfter = outcome.kineticEnergyBefore;
+    if (manifold.pointCount == 0) {
+        return outcome;
+    }
+    const Vec3& n = manifold.normal;
+    const Vec3 r = manifold.averagePoint() - body.position;
+    const Vec3 velocity = body.velocityAt(manifold.averagePoint());
+    const Real normalVelocity = glm::dot(n, velocity);
+    if (normalVelocity >= 0.0) {
+        return outcome;
+    }
+    outcome.approachSpeed = -normalVelocity;
+    outcome.restitutionApplied = -normalVelocity > settings.restitutionThreshold;
+    const Real restitution = outcome.restitutionApplied ? body.material.restitution : 0.0;
+    // (5.7): j = -(1 + e) vn / (1/m + (r x n) . I^-1 (r x n)).
+    const Vec3 rn = glm::cross(r, n);
+    const Real normalImpulse =
+        -(1.0 + restitution) * normalVelocity /
+        (body.invMass + glm::dot(rn, body.invInertiaWorld * rn));
+    // Friction along the sliding direction, at most mu j and at most what stops the sliding.
+    const Vec3 sliding = velocity - normalVelocity * n;
+    const Real slidingSpeed = glm::length(sliding);
+    Vec3 frictionImpulse(0.0);
+    if (slidingSpeed > 0.0) {
+        const Vec3 t = sliding / slidingSpeed;
+        const Vec3 rt = glm::cross(r, t);
+        const Real stoppingImpulse =
+            slidingSpeed / (body.invMass + glm::dot(rt, body.invInertiaWorld * rt));
+        const Real friction = slidingSpeed < kStickingSpeed
+                                  ? body.material.staticFrictionOrKinetic()
+                                  : body.material.friction;
+        frictionImpulse = -std::min(friction * normalImpulse, stoppingImpulse) * t;
+    }
+    outcome.normalImpulse = normalImpulse * n;
+    outcome.frictionImpulse = frictionImpulse;
+    applyImpulseAtOffset(body, outcome.normalImpulse + frictionImpulse, r);
+    outcome.kineticEnergyAfter = body.kineticEnergy();
+    return outcome;
+}
+
+} // namespace tumble

@@ -1,0 +1,48 @@
+// Impulses at the touching vertices of one cuboid: impacts with restitution, resting contact and
+// Coulomb friction (docs/physics/05-normal-impulse.md, 06-friction.md).
+#pragma once
+
+#include "tumble/body.hpp"
+#include "tumble/contact.hpp"
+
+namespace tumble {
+
+struct ContactSolveSettings {
+    /// Approach speeds below this get no restitution, m/s.
+    Real restitutionThreshold = 0.05;
+    /// Most Gauss-Seidel sweeps.
+    int iterations = 64;
+};
+
+/// What an impact did to the body.
+struct ImpactOutcome {
+    /// Fastest approach of a touching vertex before the impact (a positive speed), m/s.
+    Real approachSpeed = 0.0;
+    bool restitutionApplied = false;
+    Real kineticEnergyBefore = 0.0;
+    Real kineticEnergyAfter = 0.0;
+    /// Sums of the normal and the friction impulses, world frame, N s.
+    Vec3 normalImpulse{0.0};
+    Vec3 frictionImpulse{0.0};
+};
+
+/// Fastest approach speed of the manifold's vertices towards the plane (0 when all separate).
+Real approachSpeed(const Body& body, const ContactManifold& manifold);
+
+/// An instantaneous impact: sequential impulses with accumulated clamping reach the Newton
+/// restitution target (5.3) at every approaching vertex, with friction limited to the Coulomb
+/// cone (6.2). Never lets the kinetic energy grow (5.6). Writes the impulses into the manifold.
+ImpactOutcome resolveImpact(Body& body, ContactManifold& manifold,
+                            const ContactSolveSettings& settings);
+
+/// Resting contact over a step whose velocity already holds the step's gravity: the same solver
+/// with target normal velocity 0 (no restitution) (5.5), and friction.
+void solveRestingContact(Body& body, ContactManifold& manifold, const ContactSolveSettings& settings);
+
+/// The handouts' response (5.7): one impulse at the average touching vertex with restitution,
+/// and a Coulomb friction impulse opposing the sliding there; approachSpeed is measured at the
+/// average point. Nothing happens when that point separates.
+ImpactOutcome resolveAverageContact(Body& body, const ContactManifold& manifold,
+                                    const ContactSolveSettings& settings);
+
+} // namespace tumble

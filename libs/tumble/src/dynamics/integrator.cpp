@@ -1,0 +1,109 @@
+// Torque-free rotation: an angular-momentum-conserving splitting (default) and the handouts'
+// first-order update.
+#include "dynamics/integrator.hpp"
+
+#include "body_state.hpp"
+
+#include <cmath>
+
+namespace tumble {
+
+namespace {
+
+Vec3 unitAxis(int axis)
+{
+    Vec3 e(0.0);
+    e[axis] = 1.0;
+    return e;
+}
+
+/// The flow of H = c Pi_k^2 / 2 for time h: the body turns about its own axis k by
+/// theta = h c Pi_k, and the body-frame momentum turns the other way (2.6).
+void turnAboutBodyAxis(Quat& orientation, Vec3& bodyMomentum, int axis, Real coefficient, Real h)
+{
+    const Real angle = h * coefficient * bodyMomentum[axis];
+    if (angle == 0.0) {
+        return;
+    }
+    const Vec3 e = unitAxis(axis);
+    orientation = orientation * axisAngle(e, angle);
+    bodyMomentum = axisAngle(e, -angle) * bodyMomentum;
+}
+
+/// The flow of H = |Pi|^2 / (2 I_ref) for time h: a rotation about Pi itself, which leaves the
+/// body-frame momentum unchanged (2.5).
+void turnAboutMomentum(Quat& orientation, const Vec3& bodyMomentum, Real referenceInertia, Real h)
+{
+    const Real momentum = glm::length(bodyMomentum);
+    if (momentum == 0.0) {
+        return;
+    }
+    orientation = orientation * axisAngle(bodyMomentum / momentum, h * momentum / referenceInertia);
+}
+
+void rotateExact(Quat& orientation, Vec3& angularVelocity, const Vec3& inertiaBody, Real dt)
+{
+    // Reference moment: one of the two closest principal moments (2.7). For a symmetric body the
+    // other one's term vanishes and the remaining flows commute, so the split is exact.
+    int reference = 0;
+    int near = 1;
+    int far = 2;
+    Real closest = std::abs(inertiaBody.x - inertiaBody.y);
+    if (std::abs(inertiaBody.x - inertiaBody.z) < closest) {
+        closest = std::abs(inertiaBody.x - inertiaBody.z);
+        near = 2;
+        far = 1;
+    }
+    if (std::abs(inertiaBody.y - inertiaBody.z) < closest) {
+        reference = 1;
+        near = 2;
+        far = 0;
+    }
+    const Real referenceInertia = inertiaBody[reference];
+    const Real nearCoefficient = 1.0 / inertiaBody[near] - 1.0 / referenceInertia;
+    const Real farCoefficient = 1.0 / inertiaBody[far] - 1.0 / referenceInertia;
+
+    // (2.4): body-frame angular momentum Pi = I0 R^T w; the world momentum R Pi is what every
+    // sub-flow below conserves.
+    Vec3 bodyMomentum = inertiaBody * (glm::conjugate(orientation) * angularVelocity);
+    // Strang composition (2.7): A(h/2) B(h/2) C(h) B(h/2) A(h/2), second order and symmetric.
+    turnAboutMomentum(orientation, bodyMomentum, referenceInertia, 0.5 * dt);
+    turnAboutBodyAxis(orientation, bodyMomentum, near, nearCoefficient, 0.5 * dt);
+    turnAboutBodyAxis(orientation, bodyMomentum, far, farCoefficient, dt);
+    turnAboutBodyAxis(orientation, bodyMomentum, near, nearCoefficient, 0.5 * dt);
+    turnAboutMomentum(orientation, bodyMomentum, referenceInertia, 0.5 * dt);
+    orientation = glm::normalize(orientation);
+    angularVelocity = orientation * (bodyMomentum / inertiaBody);
+}
+
+void rotateHandout(Quat& orientation, const Vec3& angularVelocity, Real dt)
+{
+    // (2.8): R <- R + dt [w]x R, then Gram-Schmidt so R stays a rotation.
+    Mat3 rotation = glm::mat3_cast(orientation);
+    rotation += dt * skew(angularVelocity) * rotation;
+    const Vec3 column0 = glm::normalize(rotation[0]);
+    const Vec3 column1 = glm::normalize(rotation[1] - glm::dot(column0, rotation[1]) * column0);
+    rotation = Mat3(column0, column1, glm::cross(column0, column1));
+    const Quat updated = glm::normalize(glm::quat_cast(rotation));
+    // q and -q are the same rotation; keep the sign continuous so printed quaternions do not jump.
+    orientation = glm::dot(updated, orientation) < 0.0 ? -updated : updated;
+}
+
+} // namespace
+
+void integrateRotation(Quat& orientation, Vec3& angularVelocity, const Vec3& inertiaBody, Real dt,
+                       Integrator integrator)
+{
+    switch (integrator) {
+    case Integrator::Exact: rotateExact(orientation, angularVelocity, inertiaBody, dt); break;
+    case Integrator::Handout: rotateHandout(orientation, angularVelocity, dt); break;
+    }
+}
+
+void integrateRotation(Body& body, Real dt, Integrator integrator)
+{
+    integrateRotation(body.orientation, body.angularVelocity, body.inertiaBody(), dt, integrator);
+    refreshWorldInertia(body);
+}
+
+} // namespace tumble

@@ -1,0 +1,28 @@
+// Free-flight integration: torque-free rotation and constant-acceleration translation
+// (docs/physics/02-integration.md).
+#pragma once
+
+#include "tumble/body.hpp"
+#include "tumble/math.hpp"
+#include "tumble/world.hpp"
+
+namespace tumble {
+
+/// Torque-free rotation over dt. Integrator::Exact conserves the world angular momentum
+/// (2.4)-(2.7); Integrator::Handout is R += dt [w]x R with w constant (2.8).
+void integrateRotation(Quat& orientation, Vec3& angularVelocity, const Vec3& inertiaBody, Real dt,
+                       Integrator integrator);
+
+/// Same, on a body, keeping its world inverse inertia consistent with the new orientation.
+void integrateRotation(Body& body, Real dt, Integrator integrator);
+
+/// Position of the centre of mass after time s of a sub-step of length tau in which the velocity
+/// changes uniformly from velocityStart to velocityEnd (2.2): exact under constant gravity.
+inline Vec3 positionAfter(const Vec3& position, const Vec3& velocityStart, const Vec3& velocityEnd,
+                          Real tau, Real s)
+{
+    const Vec3 acceleration = (velocityEnd - velocityStart) / tau;
+    return position + s * velocityStart + (0.5 * s * s) * acceleration;
+}
+
+} // namespace tumble

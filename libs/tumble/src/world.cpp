@@ -1,0 +1,373 @@
+// World: body storage behind ids, the setters that keep bodies consistent, and the step.
+#include "tumble/world.hpp"
+
+#include "body_state.hpp"
+#include "collision/collide_cuboid_plane.hpp"
+#include "collision/time_of_impact.hpp"
+#include "dynamics/contact_solver.hpp"
+#include "dynamics/integrator.hpp"
+#include "tumble_assert.hpp"
+
+#include <cmath>
+
+namespace tumble {
+
+namespace {
+
+/// A touching vertex approaching faster than this at the start of a sub-step is an impact;
+/// slower approach is left to the resting-contact solve, m/s.
+constexpr Real kImpactSpeed = 1e-3;
+/// The time of impact puts the first vertex within this fraction of the contact tolerance of the
+/// plane, so impacts happen at the plane while the tolerance still gathers an edge or a face.
+constexpr Real kImpactTolerance = 0.01;
+/// Impacts within one step beyond this many are left to the resting-contact solve and the
+/// penetration correction, so a pathological case cannot stall a step.
+constexpr int kMaxSubsteps = 32;
+
+bool isValidDef(const BodyDef& def)
+{
+    return std::isfinite(def.mass) && def.mass > 0.0 && isFinite(def.shape.size) &&
+           def.shape.size.x > 0.0 && def.shape.size.y > 0.0 && def.shape.size.z > 0.0 &&
+           isFinite(def.position) && isFinite(def.orientation) && isFinite(def.linearVelocity) &&
+           isFinite(def.angularVelocity);
+}
+
+std::uint8_t vertexMask(const ContactManifold& manifold)
+{
+    std::uint8_t mask = 0;
+    for (int i = 0; i < manifold.pointCount; ++i) {
+        mask = static_cast<std::uint8_t>(mask | (1u << manifold.points[i].vertex));
+    }
+    return mask;
+}
+
+} // namespace
+
+World::World(const WorldSettings& settings) : m_settings(settings) {}
+
+void World::setGravity(const Vec3& gravity)
+{
+    m_settings.gravity = gravity;
+    for (Slot& slot : m_slots) {
+        wake(slot.body);
+    }
+}
+
+void World::setGround(const std::optional<Plane>& ground)
+{
+    m_ground = ground;
+    for (Slot& slot : m_slots) {
+        wake(slot.body);
+    }
+}
+
+BodyId World::createBody(const BodyDef& def)
+{
+    TUMBLE_ASSERT(isValidDef(def));
+    std::uint32_t index = 0;
+    if (!m_freeSlots.empty()) {
+        index = m_freeSlots.back();
+        m_freeSlots.pop_back();
+    } else {
+        index = static_cast<std::uint32_t>(m_slots.size());
+        m_slots.emplace_back();
+    }
+    Slot& slot = m_slots[index];
+    slot.body = makeBody(def);
+    slot.alive = true;
+    slot.touchingGround = false;
+    return BodyId{index, slot.generation};
+}
+
+void World::destroyBody(BodyId id)
+{
+    TUMBLE_ASSERT(isValid(id));
+    Slot& slot = m_slots[id.index];
+    slot.alive = false;
+    ++slot.generation;
+    m_freeSlots.push_back(id.index);
+}
+
+bool World::isValid(BodyId id) const
+{
+    return id.index < m_slots.size() && m_slots[id.index].alive &&
+           m_slots[id.index].generation == id.generation;
+}
+
+const Body& World::body(BodyId id) const
+{
+    TUMBLE_ASSERT(isValid(id));
+    return m_slots[id.index].body;
+}
+
+Body& World::mutableBody(BodyId id)
+{
+    TUMBLE_ASSERT(isValid(id));
+    return m_slots[id.index].body;
+}
+
+std::vector<BodyId> World::bodyIds() const
+{
+    std::vector<BodyId> ids;
+    for (std::uint32_t index = 0; index < m_slots.size(); ++index) {
+        if (m_slots[index].alive) {
+            ids.push_back(BodyId{index, m_slots[index].generation});
+        }
+    }
+    return ids;
+}
+
+void World::wake(Body& body)
+{
+    body.asleep = false;
+    body.slowTime = 0.0;
+}
+
+void World::setMass(BodyId id, Real mass)
+{
+    TUMBLE_ASSERT(std::isfinite(mass) && mass > 0.0);
+    Body& body = mutableBody(id);
+    body.mass = mass;
+    refreshMassProperties(body);
+    wake(body);
+}
+
+void World::setSize(BodyId id, const Vec3& size)
+{
+    TUMBLE_ASSERT(isFinite(size) && size.x > 0.0 && size.y > 0.0 && size.z > 0.0);
+    Body& body = mutableBody(id);
+    body.shape.size = size;
+    refreshMassProperties(body);
+    wake(body);
+}
+
+void World::setTransform(BodyId id, const Vec3& position, const Quat& orientation)
+{
+    Body& body = mutableBody(id);
+    body.position = position;
+    body.orientation = glm::normalize(orientation);
+    refreshWorldInertia(body);
+    wake(body);
+}
+
+void World::setLinearVelocity(BodyId id, const Vec3& velocity)
+{
+    Body& body = mutableBody(id);
+    body.linearVelocity = velocity;
+    wake(body);
+}
+
+void World::setAngularVelocity(BodyId id, const Vec3& angularVelocity)
+{
+    Body& body = mutableBody(id);
+    body.angularVelocity = angularVelocity;
+    wake(body);
+}
+
+void World::setMaterial(BodyId id, const Material& material)
+{
+    Body& body = mutableBody(id);
+    body.material = material;
+    wake(body);
+}
+
+void World::applyImpulse(BodyId id, const Vec3& impulse, const Vec3& worldPoint)
+{
+    Body& body = mutableBody(id);
+    applyImpulseAtOffset(body, impulse, worldPoint - body.position);
+    wake(body);
+}
+
+ContactManifold World::contactsOf(BodyId id) const
+{
+    const Body& body = this->body(id);
+    ContactManifold manifold;
+    if (m_ground) {
+        manifold = collideCuboidPlane({body.position, body.orientation}, body.shape.halfExtents(),
+                                      *m_ground, m_settings.contactTolerance);
+    }
+    manifold.body = id;
+    return manifold;
+}
+
+void World::step(Real dt)
+{
+    TUMBLE_ASSERT(std::isfinite(dt) && dt > 0.0);
+    m_collisions.clear();
+    m_restEvents.clear();
+    for (std::uint32_t index = 0; index < m_slots.size(); ++index) {
+        Slot& slot = m_slots[index];
+        if (!slot.alive || slot.body.asleep) {
+            continue;
+        }
+        const BodyId id{index, slot.generation};
+        if (m_settings.response == ContactResponse::Average) {
+            advanceAverage(id, slot, dt);
+        } else {
+            advanceSequential(id, slot, dt);
+        }
+        updateRest(id, slot, dt);
+    }
+    m_time += dt;
+}
+
+void World::advanceSequential(BodyId id, Slot& slot, Real dt)
+{
+    Body& body = slot.body;
+    const ContactSolveSettings solveSettings{m_settings.restitutionThreshold,
+                                             m_settings.solverIterations};
+    Real elapsed = 0.0;
+    for (int substep = 0;; ++substep) {
+        const Real remaining = dt - elapsed;
+        // 1. Detect the vertices touching the ground now.
+        ContactManifold contacts = contactsOf(id);
+        // 2. Resolve an impact at once: restitution and friction impulses.
+        if (approachSpeed(body, contacts) > kImpactSpeed) {
+            recordImpact(contacts, resolveImpact(body, contacts, solveSettings), m_time + elapsed);
+        }
+        // 3. Integrate velocities over the sub-step: gravity, then resting contact.
+        const Vec3 velocityStart = body.linearVelocity;
+        const Vec3 angularVelocityStart = body.angularVelocity;
+        Real tau = remaining;
+        integrateVelocities(body, contacts, tau);
+        // 4. Shorten the sub-step to the first impact of another vertex.
+        if (m_ground && substep < kMaxSubsteps) {
+            const Real impact = timeOfImpact(substepMotion(body, velocityStart, tau),
+                                             body.shape.halfExtents(), *m_ground,
+                                             vertexMask(contacts),
+                                             kImpactTolerance * m_settings.contactTolerance);
+            if (impact < tau) {
+                body.linearVelocity = velocityStart;
+                body.angularVelocity = angularVelocityStart;
+                tau = impact;
+                integrateVelocities(body, contacts, tau);
+            }
+        }
+        // 5. Integrate positions and orientation.
+        integratePositions(body, velocityStart, tau);
+        // 6. Push the body out of any penetration left by the sub-step.
+        correctPenetration(body);
+        if (tau == remaining) {
+            break;
+        }
+        elapsed += tau;
+    }
+    slot.touchingGround = contactsOf(id).pointCount > 0;
+}
+
+void World::advanceAverage(BodyId id, Slot& slot, Real dt)
+{
+    Body& body = slot.body;
+    // The handouts' order: move freely for the whole step, then detect and respond.
+    const Vec3 velocityStart = body.linearVelocity;
+    body.linearVelocity += m_settings.gravity * dt;
+    integratePositions(body, velocityStart, dt);
+    ContactManifold contacts = contactsOf(id);
+    const bool wasTouching = slot.touchingGround;
+    slot.touchingGround = contacts.pointCount > 0;
+    if (contacts.pointCount == 0) {
+        return;
+    }
+    // Move the body up so its lowest vertex lies on the plane (handout part 2, task 3).
+    const Real lift = contacts.maxPenetration();
+    body.position += lift * contacts.normal;
+    for (int i = 0; i < contacts.pointCount; ++i) {
+        contacts.points[i].position += lift * contacts.normal;
+    }
+    const ContactSolveSettings solveSettings{m_settings.restitutionThreshold,
+                                             m_settings.solverIterations};
+    const ImpactOutcome outcome = resolveAverageContact(body, contacts, solveSettings);
+    // A resting body gains |g| dt of approach every step; only a real impact is reported.
+    const Real restingApproach = glm::length(m_settings.gravity) * dt;
+    if (outcome.approachSpeed > 0.0 &&
+        (!wasTouching ||
+         outcome.approachSpeed > m_settings.restitutionThreshold + restingApproach)) {
+        recordImpact(contacts, outcome, m_time + dt);
+    }
+}
+
+void World::integrateVelocities(Body& body, ContactManifold& contacts, Real tau) const
+{
+    body.linearVelocity += m_settings.gravity * tau;
+    if (contacts.pointCount > 0) {
+        solveRestingContact(body, contacts,
+                            {m_settings.restitutionThreshold, m_settings.solverIterations});
+    }
+}
+
+SubstepMotion World::substepMotion(const Body& body, const Vec3& velocityStart, Real tau) const
+{
+    SubstepMotion motion;
+    motion.start = {body.position, body.orientation};
+    // Semi-implicit Euler for the handout integrator: the end velocity for the whole sub-step.
+    motion.velocityStart =
+        m_settings.integrator == Integrator::Exact ? velocityStart : body.linearVelocity;
+    motion.velocityEnd = body.linearVelocity;
+    motion.angularVelocity = body.angularVelocity;
+    motion.inertiaBody = body.inertiaBody();
+    motion.tau = tau;
+    motion.integrator = m_settings.integrator;
+    return motion;
+}
+
+void World::integratePositions(Body& body, const Vec3& velocityStart, Real tau) const
+{
+    // (2.2): with the velocity changing uniformly over the sub-step the mean velocity is exact;
+    // the handout integrator takes the end velocity (semi-implicit Euler, (2.3)).
+    const Vec3 mean = m_settings.integrator == Integrator::Exact
+                          ? 0.5 * (velocityStart + body.linearVelocity)
+                          : body.linearVelocity;
+    body.position += tau * mean;
+    integrateRotation(body, tau, m_settings.integrator);
+}
+
+void World::correctPenetration(Body& body) const
+{
+    if (!m_ground) {
+        return;
+    }
+    // (4.5): a pure translation along the normal; velocities are untouched, so no kinetic
+    // energy is added.
+    const Real lowest =
+        lowestVertexHeight({body.position, body.orientation}, body.shape.halfExtents(), *m_ground);
+    if (lowest < 0.0) {
+        body.position -= lowest * Plane::normal();
+    }
+}
+
+void World::recordImpact(const ContactManifold& contacts, const ImpactOutcome& outcome, Real time)
+{
+    CollisionEvent event;
+    event.time = time;
+    event.manifold = contacts;
+    event.approachSpeed = outcome.approachSpeed;
+    event.normalImpulse = outcome.normalImpulse;
+    event.frictionImpulse = outcome.frictionImpulse;
+    event.restitutionApplied = outcome.restitutionApplied;
+    event.kineticEnergyBefore = outcome.kineticEnergyBefore;
+    event.kineticEnergyAfter = outcome.kineticEnergyAfter;
+    m_collisions.push_back(event);
+}
+
+void World::updateRest(BodyId id, Slot& slot, Real dt)
+{
+    Body& body = slot.body;
+    const bool slow = slot.touchingGround &&
+                      glm::length(body.linearVelocity) < m_settings.sleepLinearSpeed &&
+                      glm::length(body.angularVelocity) < m_settings.sleepAngularSpeed;
+    const Real slowBefore = body.slowTime;
+    body.slowTime = slow ? body.slowTime + dt : 0.0;
+    if (slowBefore >= m_settings.sleepTime || body.slowTime < m_settings.sleepTime) {
+        return;
+    }
+    // The body has just stayed slow for sleepTime: it is at rest since it became slow.
+    m_restEvents.push_back(RestEvent{id, m_time + dt - body.slowTime,
+                                     faceAlong(body.orientation, -Plane::normal())});
+    if (m_settings.allowSleep) {
+        body.asleep = true;
+        body.linearVelocity = Vec3(0.0);
+        body.angularVelocity = Vec3(0.0);
+    }
+}
+
+} // namespace tumble
