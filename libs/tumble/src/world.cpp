@@ -8,7 +8,9 @@
 #include "dynamics/integrator.hpp"
 #include "tumble_assert.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace tumble {
 
@@ -19,7 +21,7 @@ namespace {
 constexpr Real kImpactSpeed = 1e-3;
 /// The time of impact puts the first vertex within this fraction of the contact tolerance of the
 /// plane, so impacts happen at the plane while the tolerance still gathers an edge or a face.
-constexpr Real kImpactTolerance = 0.01;
+constexpr Real kImpactTolerance = 1e-4;
 /// Impacts within one step beyond this many are left to the resting-contact solve and the
 /// penetration correction, so a pathological case cannot stall a step.
 constexpr int kMaxSubsteps = 32;
@@ -39,6 +41,46 @@ std::uint8_t vertexMask(const ContactManifold& manifold)
         mask = static_cast<std::uint8_t>(mask | (1u << manifold.points[i].vertex));
     }
     return mask;
+}
+
+/// Height above the plane of the lowest vertex of the manifold that approaches it.
+Real lowestApproachingHeight(const Body& body, const ContactManifold& manifold)
+{
+    Real lowest = std::numeric_limits<Real>::infinity();
+    for (int i = 0; i < manifold.pointCount; ++i) {
+        const ContactPoint& point = manifold.points[i];
+        if (glm::dot(manifold.normal, body.velocityAt(point.position)) < -kImpactSpeed) {
+            lowest = std::min(lowest, -point.penetration);
+        }
+    }
+    return lowest;
+}
+
+/// Keeps only the points that do not approach the plane.
+void dropApproachingPoints(const Body& body, ContactManifold& manifold)
+{
+    int kept = 0;
+    for (int i = 0; i < manifold.pointCount; ++i) {
+        const ContactPoint& point = manifold.points[i];
+        if (glm::dot(manifold.normal, body.velocityAt(point.position)) >= -kImpactSpeed) {
+            manifold.points[kept++] = point;
+        }
+    }
+    manifold.pointCount = kept;
+}
+
+/// After an impact found by the time of impact, the lowest vertex is at most the impact
+/// tolerance above the plane: put it on the plane, a translation that lowers the potential
+/// energy by at most m g times that tolerance (04-detection.md, (4.5)).
+void settleOnPlane(Body& body, const ContactManifold& manifold)
+{
+    Real lowest = std::numeric_limits<Real>::infinity();
+    for (int i = 0; i < manifold.pointCount; ++i) {
+        lowest = std::min(lowest, -manifold.points[i].penetration);
+    }
+    if (lowest > 0.0 && std::isfinite(lowest)) {
+        body.position -= lowest * manifold.normal;
+    }
 }
 
 } // namespace
@@ -221,9 +263,17 @@ void World::advanceSequential(BodyId id, Slot& slot, Real dt)
         const Real remaining = dt - elapsed;
         // 1. Detect the vertices touching the ground now.
         ContactManifold contacts = contactsOf(id);
-        // 2. Resolve an impact at once: restitution and friction impulses.
+        // 2. Resolve an impact at once (restitution and friction impulses) when an approaching
+        //    vertex has reached the plane; approaching vertices still above it are left to the
+        //    time of impact, so the impact happens at the plane.
         if (approachSpeed(body, contacts) > kImpactSpeed) {
-            recordImpact(contacts, resolveImpact(body, contacts, solveSettings), m_time + elapsed);
+            if (lowestApproachingHeight(body, contacts) <= impactTolerance()) {
+                recordImpact(contacts, resolveImpact(body, contacts, solveSettings),
+                             m_time + elapsed);
+                settleOnPlane(body, contacts);
+            } else {
+                dropApproachingPoints(body, contacts);
+            }
         }
         // 3. Integrate velocities over the sub-step: gravity, then resting contact.
         const Vec3 velocityStart = body.linearVelocity;
@@ -234,8 +284,7 @@ void World::advanceSequential(BodyId id, Slot& slot, Real dt)
         if (m_ground && substep < kMaxSubsteps) {
             const Real impact = timeOfImpact(substepMotion(body, velocityStart, tau),
                                              body.shape.halfExtents(), *m_ground,
-                                             vertexMask(contacts),
-                                             kImpactTolerance * m_settings.contactTolerance);
+                                             vertexMask(contacts), impactTolerance());
             if (impact < tau) {
                 body.linearVelocity = velocityStart;
                 body.angularVelocity = angularVelocityStart;
@@ -286,13 +335,15 @@ void World::advanceAverage(BodyId id, Slot& slot, Real dt)
     }
 }
 
+Real World::impactTolerance() const
+{
+    return kImpactTolerance * m_settings.contactTolerance;
+}
+
 void World::integrateVelocities(Body& body, ContactManifold& contacts, Real tau) const
 {
-    body.linearVelocity += m_settings.gravity * tau;
-    if (contacts.pointCount > 0) {
-        solveRestingContact(body, contacts,
-                            {m_settings.restitutionThreshold, m_settings.solverIterations});
-    }
+    solveRestingContact(body, contacts, m_settings.gravity * tau, tau,
+                        {m_settings.restitutionThreshold, m_settings.solverIterations});
 }
 
 SubstepMotion World::substepMotion(const Body& body, const Vec3& velocityStart, Real tau) const

@@ -133,6 +133,7 @@ private:
     static void wake(Body& body);
     void advanceSequential(BodyId id, Slot& slot, Real dt);
     void advanceAverage(BodyId id, Slot& slot, Real dt);
+    [[nodiscard]] Real impactTolerance() const;
     void integrateVelocities(Body& body, ContactManifold& contacts, Real tau) const;
     [[nodiscard]] SubstepMotion substepMotion(const Body& body, const Vec3& velocityStart,
                                               Real tau) const;

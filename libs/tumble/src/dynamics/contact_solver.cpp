@@ -79,6 +79,54 @@ SolverPoint preparePoint(const Body& body, const SolverFrame& frame, const Vec3&
     return point;
 }
 
+/// The friction impulse of one point with the others held fixed (6.4): the impulse in the disc
+/// |lambda| <= mu lambda_n that minimises the kinetic energy, lambda^T K lambda / 2 +
+/// lambda^T v_free, where v_free is the tangential velocity without this point's friction. Inside
+/// the disc it stops the sliding; on its edge it is -(K + s 1)^-1 v_free with s >= 0 such that
+/// |lambda| = mu lambda_n, which makes the remaining sliding velocity exactly opposite to it
+/// (maximal dissipation). s is found by Newton's method on 1/|lambda(s)| - 1/bound, which is
+/// concave and increasing, so the iteration converges from s = 0 without overshooting.
+void solveFriction(const SolverPoint& point, Real v1, Real v2, Real& impulse1, Real& impulse2)
+{
+    const std::array<Real, 4>& k = point.tangentK;
+    const Real free1 = v1 - (k[0] * point.tangentImpulse1 + k[1] * point.tangentImpulse2);
+    const Real free2 = v2 - (k[2] * point.tangentImpulse1 + k[3] * point.tangentImpulse2);
+    impulse1 = -(point.tangentMass[0] * free1 + point.tangentMass[1] * free2);
+    impulse2 = -(point.tangentMass[2] * free1 + point.tangentMass[3] * free2);
+    const Real bound = point.friction * point.normalImpulse;
+    if (std::hypot(impulse1, impulse2) <= bound) {
+        return;
+    }
+    if (bound <= 0.0) {
+        impulse1 = 0.0;
+        impulse2 = 0.0;
+        return;
+    }
+    Real shift = 0.0;
+    for (int iteration = 0; iteration < 50; ++iteration) {
+        const Real a = k[0] + shift;
+        const Real d = k[3] + shift;
+        const Real invDeterminant = 1.0 / (a * d - k[1] * k[1]);
+        impulse1 = -(d * free1 - k[1] * free2) * invDeterminant;
+        impulse2 = -(a * free2 - k[1] * free1) * invDeterminant;
+        const Real magnitude = std::hypot(impulse1, impulse2);
+        if (std::abs(magnitude - bound) <= 1e-15 * bound) {
+            break;
+        }
+        // d|lambda|/ds = -lambda^T (K + s 1)^-1 lambda / |lambda|.
+        const Real quadratic =
+            (d * impulse1 * impulse1 - 2.0 * k[1] * impulse1 * impulse2 + a * impulse2 * impulse2) *
+            invDeterminant;
+        const Real value = 1.0 / magnitude - 1.0 / bound;
+        const Real slope = quadratic / (magnitude * magnitude * magnitude);
+        shift = std::max(0.0, shift - value / slope);
+    }
+    // Rounding aside the impulse is on the circle; put it there exactly.
+    const Real scale = bound / std::hypot(impulse1, impulse2);
+    impulse1 *= scale;
+    impulse2 *= scale;
+}
+
 /// Gauss-Seidel over the points, friction then normal at each (normal last so non-penetration
 /// wins), accumulated impulses clamped to the cone |lambda_t| <= mu lambda_n (6.2) and
 /// lambda_n >= 0 (5.4). `targetScale` scales every restitution target (5.6).
@@ -92,25 +140,9 @@ void solvePoints(Body& body, const SolverFrame& frame, std::span<SolverPoint> po
             Vec3 velocity = body.linearVelocity + glm::cross(body.angularVelocity, point.r);
             const Real v1 = glm::dot(frame.t1, velocity);
             const Real v2 = glm::dot(frame.t2, velocity);
-            Real candidate1 = point.tangentImpulse1 -
-                              (point.tangentMass[0] * v1 + point.tangentMass[1] * v2);
-            Real candidate2 = point.tangentImpulse2 -
-                              (point.tangentMass[2] * v1 + point.tangentMass[3] * v2);
-            const Real bound = point.friction * point.normalImpulse;
-            if (std::hypot(candidate1, candidate2) > bound) {
-                // Sliding: the friction is the largest the cone allows, opposite the velocity the
-                // point would slide with if this point's friction were removed (maximal
-                // dissipation, (6.4)). Clamping the candidate vector instead would tilt it off
-                // the sliding direction through the coupling in K_t.
-                const Real free1 = v1 - (point.tangentK[0] * point.tangentImpulse1 +
-                                         point.tangentK[1] * point.tangentImpulse2);
-                const Real free2 = v2 - (point.tangentK[2] * point.tangentImpulse1 +
-                                         point.tangentK[3] * point.tangentImpulse2);
-                const Real freeSpeed = std::hypot(free1, free2);
-                const Real scale = freeSpeed > 0.0 ? bound / freeSpeed : 0.0;
-                candidate1 = -scale * free1;
-                candidate2 = -scale * free2;
-            }
+            Real candidate1 = 0.0;
+            Real candidate2 = 0.0;
+            solveFriction(point, v1, v2, candidate1, candidate2);
             const Real change1 = candidate1 - point.tangentImpulse1;
             const Real change2 = candidate2 - point.tangentImpulse2;
             point.tangentImpulse1 = candidate1;
@@ -226,11 +258,21 @@ ImpactOutcome resolveImpact(Body& body, ContactManifold& manifold,
     return outcome;
 }
 
-void solveRestingContact(Body& body, ContactManifold& manifold, const ContactSolveSettings& settings)
+void solveRestingContact(Body& body, ContactManifold& manifold, const Vec3& gravityImpulsePerMass,
+                         Real tau, const ContactSolveSettings& settings)
 {
-    // Restitution 0: resting contact only cancels approach (5.5).
+    // Prepared before gravity acts, so a body at rest on a slope sees no sliding and keeps the
+    // static coefficient.
     PreparedSolve solve = prepare(body, manifold, 0.0, settings.restitutionThreshold);
-    solvePoints(body, solve.frame, std::span(solve.points.data(), solve.count), 0.0,
+    body.linearVelocity += gravityImpulsePerMass;
+    if (solve.count == 0) {
+        return;
+    }
+    for (int i = 0; i < solve.count; ++i) {
+        // (5.9): the target -h / tau lets a vertex at height h reach the plane, no further.
+        solve.points[i].targetNormalVelocity = -std::max(0.0, -manifold.points[i].penetration) / tau;
+    }
+    solvePoints(body, solve.frame, std::span(solve.points.data(), solve.count), 1.0,
                 settings.iterations);
     ImpactOutcome unused;
     publish(solve, manifold, unused);

@@ -35,9 +35,12 @@ Real approachSpeed(const Body& body, const ContactManifold& manifold);
 ImpactOutcome resolveImpact(Body& body, ContactManifold& manifold,
                             const ContactSolveSettings& settings);
 
-/// Resting contact over a step whose velocity already holds the step's gravity: the same solver
-/// with target normal velocity 0 (no restitution) (5.5), and friction.
-void solveRestingContact(Body& body, ContactManifold& manifold, const ContactSolveSettings& settings);
+/// A sub-step of length tau: adds `gravityImpulsePerMass` (g tau) to the velocity, then solves
+/// resting contact with no restitution (5.5): a vertex on the plane may not approach it, and one
+/// still h above it may approach at most at h / tau, so it comes down onto the plane instead of
+/// hovering (5.9). Static or kinetic friction is chosen from the sliding before gravity acts.
+void solveRestingContact(Body& body, ContactManifold& manifold, const Vec3& gravityImpulsePerMass,
+                         Real tau, const ContactSolveSettings& settings);
 
 /// The handouts' response (5.7): one impulse at the average touching vertex with restitution,
 /// and a Coulomb friction impulse opposing the sliding there; approachSpeed is measured at the

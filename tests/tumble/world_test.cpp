@@ -1,0 +1,129 @@
+// World: ids, setters, events and rest detection.
+#include "tumble/world.hpp"
+
+#include "support/glm_printers.hpp"
+#include "support/test_world.hpp"
+
+#include <gtest/gtest.h>
+
+namespace tumble {
+namespace {
+
+using testing::near;
+
+TEST(World, DestroyedIdsBecomeInvalidAndSlotsAreReused)
+{
+    World world;
+    const BodyId first = world.createBody(BodyDef{});
+    const BodyId second = world.createBody(BodyDef{});
+    EXPECT_TRUE(world.isValid(first));
+    EXPECT_FALSE(world.isValid(BodyId{}));
+    world.destroyBody(first);
+    EXPECT_FALSE(world.isValid(first));
+    const BodyId third = world.createBody(BodyDef{.mass = 5.0});
+    EXPECT_EQ(third.index, first.index);
+    EXPECT_NE(third.generation, first.generation);
+    EXPECT_FALSE(world.isValid(first));
+    EXPECT_EQ(world.bodyIds().size(), 2u);
+    EXPECT_EQ(world.body(second).mass, 1.0);
+}
+
+TEST(World, TimeIsTheSumOfTheSteps)
+{
+    World world;
+    world.step(0.25);
+    world.step(0.5);
+    EXPECT_DOUBLE_EQ(world.time(), 0.75);
+}
+
+TEST(World, WithoutGroundABodyFallsForever)
+{
+    World world;
+    const BodyId id = world.createBody(BodyDef{});
+    testing::simulate(world, 2.0, 1.0 / 60.0);
+    EXPECT_TRUE(world.collisions().empty());
+    // Exact under constant gravity: y = -g t^2 / 2.
+    EXPECT_NEAR(world.body(id).position.y, -0.5 * 9.81 * 4.0, 1e-9);
+}
+
+TEST(World, AnImpactIsReportedOnceNotEveryStepOfRestingContact)
+{
+    World world = testing::worldWithGround();
+    const BodyId id = world.createBody(BodyDef{.position = Vec3(0, 1.5, 0),
+                                               .material = {.restitution = 0.0}});
+    int impacts = 0;
+    testing::simulate(world, 3.0, 1.0 / 240.0, [&](const World& w) {
+        impacts += static_cast<int>(w.collisions().size());
+    });
+    EXPECT_EQ(impacts, 1);
+    EXPECT_NEAR(world.body(id).position.y, 1.0, 1e-9);
+}
+
+TEST(World, CollisionEventReportsTheFeatureTheAverageAndTheImpulse)
+{
+    // A cube dropped face-down from 0.5 m: it lands at t = sqrt(2 h / g) with speed
+    // sqrt(2 g h) on a face whose average point is straight below the centre.
+    World world = testing::worldWithGround();
+    world.createBody(BodyDef{.position = Vec3(3, 1.5, -2), .material = {.restitution = 0.5}});
+    bool seen = false;
+    testing::simulate(world, 1.0, 1.0 / 240.0, [&](const World& w) {
+        if (seen || w.collisions().empty()) {
+            return;
+        }
+        seen = true;
+        const CollisionEvent& event = w.collisions().front();
+        EXPECT_EQ(event.manifold.feature(), ContactFeature::Face);
+        EXPECT_TRUE(near(event.manifold.averagePoint(), Vec3(3, 0, -2), 1e-6));
+        EXPECT_NEAR(event.time, std::sqrt(2 * 0.5 / 9.81), 1e-6);
+        EXPECT_NEAR(event.approachSpeed, std::sqrt(2 * 9.81 * 0.5), 1e-6);
+        EXPECT_NEAR(event.normalImpulse.y, 1.5 * event.approachSpeed, 1e-9);
+        EXPECT_TRUE(event.restitutionApplied);
+    });
+    EXPECT_TRUE(seen);
+}
+
+TEST(World, ABodyAtRestIsReportedOnceAndSleepsUntilAnImpulseWakesIt)
+{
+    World world = testing::worldWithGround();
+    const BodyId id = world.createBody(BodyDef{.position = Vec3(0, 1, 0)});
+    int restEvents = 0;
+    testing::simulate(world, 2.0, 1.0 / 240.0, [&](const World& w) {
+        for (const RestEvent& event : w.restEvents()) {
+            ++restEvents;
+            EXPECT_EQ(event.faceDown, CuboidFace::MinusY);
+            EXPECT_NEAR(event.time, 0.0, 1e-12); // it was at rest from the start
+        }
+    });
+    EXPECT_EQ(restEvents, 1);
+    EXPECT_TRUE(world.body(id).asleep);
+
+    world.applyImpulse(id, Vec3(0, 5, 0), world.body(id).position);
+    EXPECT_FALSE(world.body(id).asleep);
+    world.step(1.0 / 240.0);
+    EXPECT_GT(world.body(id).position.y, 1.0);
+}
+
+TEST(World, SleepCanBeTurnedOffAndRestIsStillReported)
+{
+    World world = testing::worldWithGround(WorldSettings{.allowSleep = false});
+    const BodyId id = world.createBody(BodyDef{.position = Vec3(0, 1, 0)});
+    int restEvents = 0;
+    testing::simulate(world, 2.0, 1.0 / 240.0,
+                      [&](const World& w) { restEvents += static_cast<int>(w.restEvents().size()); });
+    EXPECT_EQ(restEvents, 1);
+    EXPECT_FALSE(world.body(id).asleep);
+    EXPECT_NEAR(world.body(id).position.y, 1.0, 1e-12);
+}
+
+TEST(World, GravityCanBeChanged)
+{
+    World world(WorldSettings{.gravity = Vec3(0.0)});
+    const BodyId id = world.createBody(BodyDef{});
+    world.setGravity(Vec3(1, 0, 0));
+    world.step(1.0);
+    EXPECT_TRUE(near(world.body(id).linearVelocity, Vec3(1, 0, 0), 1e-15));
+    EXPECT_TRUE(near(world.body(id).position, Vec3(0.5, 0, 0), 1e-15));
+}
+
+} // namespace
+} // namespace tumble
