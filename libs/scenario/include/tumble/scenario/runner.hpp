@@ -1,0 +1,64 @@
+// Runner: steps a scenario's World with its fixed dt and applies the scheduled impulses on time.
+#pragma once
+
+#include "tumble/contact.hpp"
+#include "tumble/math.hpp"
+#include "tumble/scenario/scenario.hpp"
+#include "tumble/world.hpp"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace tumble::scenario {
+
+/// A scheduled impulse as it was applied.
+struct AppliedImpulse {
+    Real time = 0.0;
+    std::size_t bodyIndex = 0;
+    /// The entry's label ("impulse[0]").
+    std::string label;
+    bool solvedFromTarget = false;
+    Vec3 impulse{0.0};
+    Vec3 offset{0.0};
+    Vec3 velocityBefore{0.0};
+    Vec3 angularVelocityBefore{0.0};
+    Vec3 velocityAfter{0.0};
+    Vec3 angularVelocityAfter{0.0};
+};
+
+/// What happened during one Runner::step.
+struct StepReport {
+    std::vector<AppliedImpulse> impulses;
+    std::vector<CollisionEvent> collisions;
+    std::vector<RestEvent> restEvents;
+};
+
+/// Owns the World built from a scenario and advances it one fixed step at a time. An impulse
+/// whose time falls inside a step splits that step, so it acts at exactly its `at`.
+class Runner {
+public:
+    explicit Runner(const Scenario& scenario);
+
+    [[nodiscard]] const Scenario& scenario() const { return m_scenario; }
+    [[nodiscard]] World& world() { return m_built.world; }
+    [[nodiscard]] const World& world() const { return m_built.world; }
+    [[nodiscard]] const std::vector<BodyId>& bodies() const { return m_built.bodies; }
+    [[nodiscard]] const std::string& bodyName(std::size_t index) const;
+    /// Index in scenario().bodies of the body with this id.
+    [[nodiscard]] std::size_t bodyIndex(BodyId id) const;
+
+    /// Number of fixed steps taken; time() is stepCount() * dt, not a running sum.
+    [[nodiscard]] long long stepCount() const { return m_stepCount; }
+    [[nodiscard]] Real time() const;
+    /// Advances by the scenario's dt. Throws ScenarioError when a target impulse is unreachable.
+    StepReport step();
+
+private:
+    Scenario m_scenario;
+    BuiltWorld m_built;
+    std::size_t m_nextImpulse = 0;
+    long long m_stepCount = 0;
+};
+
+} // namespace tumble::scenario

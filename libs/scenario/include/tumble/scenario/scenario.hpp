@@ -1,0 +1,97 @@
+// Scenario: a scene file turned into plain data, and a World built from it.
+#pragma once
+
+#include "tumble/body_id.hpp"
+#include "tumble/math.hpp"
+#include "tumble/shape.hpp"
+#include "tumble/world.hpp"
+
+#include <filesystem>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace tumble::scenario {
+
+/// Where a value came from: a file and line, or a --set override.
+struct SourceLocation {
+    std::string file;
+    /// 1-based line; 0 when unknown (a missing file, an override).
+    int line = 0;
+};
+
+/// A bad scenario: what() is one line "FILE:LINE: KEY: problem" (":LINE" left out when unknown).
+class ScenarioError : public std::runtime_error {
+public:
+    ScenarioError(SourceLocation where, std::string key, const std::string& problem);
+
+    [[nodiscard]] const SourceLocation& where() const { return m_where; }
+    [[nodiscard]] const std::string& key() const { return m_key; }
+
+private:
+    SourceLocation m_where;
+    std::string m_key;
+};
+
+/// One [[body]] entry.
+struct BodySpec {
+    /// Unique name; "body<i>" (1-based) when the file gives none.
+    std::string name;
+    BodyDef def{};
+    SourceLocation where{};
+};
+
+/// One [[impulse]] entry: either an impulse at an offset, or a target the runner solves for.
+struct ImpulseSpec {
+    /// Simulated time at which it is applied, s (>= 0).
+    Real at = 0.0;
+    /// Name of the body it acts on.
+    std::string body;
+    /// Impulse (N s) and offset (point minus centre of mass, world axes, m) when given directly.
+    std::optional<Vec3> impulse;
+    std::optional<Vec3> offset;
+    /// Target velocity and angular velocity when the impulse is to be solved for.
+    std::optional<Vec3> targetVelocity;
+    std::optional<Vec3> targetAngularVelocity;
+    /// "impulse[i]" (0-based, file order), used in messages.
+    std::string label;
+    SourceLocation where{};
+
+    [[nodiscard]] bool isTarget() const { return targetVelocity.has_value(); }
+};
+
+/// A whole scene: world settings, run parameters, ground, bodies and scheduled impulses.
+struct Scenario {
+    std::string sourceName;
+    WorldSettings settings{};
+    /// Fixed time step, s. Default 1/240.
+    Real dt = 1.0 / 240.0;
+    /// How long `tumble run` simulates, s. Default 10.
+    Real duration = 10.0;
+    /// The ground plane; none when the file has no [ground] table.
+    std::optional<Plane> ground;
+    std::vector<BodySpec> bodies;
+    /// Sorted by `at` (stable, so entries at the same time keep file order).
+    std::vector<ImpulseSpec> impulses;
+};
+
+/// Reads and validates a scenario file. `overrides` are "KEY=VALUE" strings (`world.dt=0.001`,
+/// `rb.elasticity=0.7`, `ground.height=1`) applied before validation. Throws ScenarioError.
+Scenario loadScenario(const std::filesystem::path& path, std::span<const std::string> overrides = {});
+
+/// Same, from text already in memory; `sourceName` is used in messages.
+Scenario parseScenario(std::string_view text, std::string_view sourceName,
+                       std::span<const std::string> overrides = {});
+
+/// A World holding the scenario's ground and bodies, and the ids in BodySpec order.
+struct BuiltWorld {
+    World world;
+    std::vector<BodyId> bodies;
+};
+
+BuiltWorld buildWorld(const Scenario& scenario);
+
+} // namespace tumble::scenario

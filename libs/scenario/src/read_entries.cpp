@@ -1,0 +1,232 @@
+// The [[body]] and [[impulse]] arrays of a scenario file, checked and turned into specs.
+#include "read_entries.hpp"
+
+#include "messages.hpp"
+#include "schema.hpp"
+
+#include <algorithm>
+#include <cstddef>
+#include <map>
+#include <string>
+
+namespace tumble::scenario::detail {
+
+namespace {
+
+/// size or scale (not both) into the cuboid's full extents.
+void readShape(const TomlReader& reader, const toml::table& table, const std::string& key,
+               const std::string& context, BodyDef& def)
+{
+    const toml::node* size = table.get("size");
+    const toml::node* scale = table.get("scale");
+    if (size != nullptr && scale != nullptr) {
+        reader.fail(*scale, key + ".scale",
+                    "give size or scale, not both (size is the full extents; scale multiplies "
+                    "the default 2 x 2 x 2 cube)" +
+                        context);
+    }
+    if (size != nullptr) {
+        def.shape.size = reader.positiveVec3(*size, key + ".size", context);
+    }
+    if (scale != nullptr) {
+        def.shape.size = Cuboid{}.size * reader.positiveVec3(*scale, key + ".scale", context);
+    }
+}
+
+/// elasticity, friction and static_friction into the body's Material.
+void readMaterial(const TomlReader& reader, const toml::table& table, const std::string& key,
+                  const std::string& context, Material& material)
+{
+    ifPresent(table, "elasticity", [&](const toml::node& node) {
+        const Real elasticity = reader.real(node, key + ".elasticity");
+        if (elasticity < 0.0 || elasticity > 1.0) {
+            reader.fail(node, key + ".elasticity",
+                        "must be in [0, 1], got " + formatReal(elasticity) + context);
+        }
+        material.restitution = elasticity;
+    });
+    ifPresent(table, "friction", [&](const toml::node& node) {
+        material.friction = reader.nonNegative(node, key + ".friction", context);
+    });
+    ifPresent(table, "static_friction", [&](const toml::node& node) {
+        const Real staticFriction = reader.real(node, key + ".static_friction");
+        if (staticFriction < material.friction) {
+            reader.fail(node, key + ".static_friction",
+                        "must be >= friction (" + formatReal(material.friction) + "), got " +
+                            formatReal(staticFriction) + context);
+        }
+        material.staticFriction = staticFriction;
+    });
+}
+
+BodySpec readBody(const TomlReader& reader, const toml::table& table, std::size_t index)
+{
+    const std::string key = "body[" + std::to_string(index) + "]";
+    reader.checkKeys(table, key, kBodyKeys);
+    BodySpec spec;
+    spec.where = reader.locate(table);
+    spec.name = "body" + std::to_string(index + 1);
+    ifPresent(table, "name", [&](const toml::node& node) {
+        spec.name = reader.string(node, key + ".name");
+        if (spec.name.empty()) {
+            reader.fail(node, key + ".name", "must not be empty");
+        }
+    });
+    // Added to range problems so that the message names the body, not only its index.
+    const std::string context = " (body \"" + spec.name + "\")";
+    BodyDef& def = spec.def;
+    readShape(reader, table, key, context, def);
+    ifPresent(table, "mass", [&](const toml::node& node) {
+        def.mass = reader.positive(node, key + ".mass", context);
+    });
+    ifPresent(table, "position",
+              [&](const toml::node& node) { def.position = reader.vec3(node, key + ".position"); });
+    ifPresent(table, "orientation", [&](const toml::node& node) {
+        def.orientation = reader.orientation(node, key + ".orientation");
+    });
+    ifPresent(table, "velocity", [&](const toml::node& node) {
+        def.linearVelocity = reader.vec3(node, key + ".velocity");
+    });
+    ifPresent(table, "angular_velocity", [&](const toml::node& node) {
+        def.angularVelocity = reader.vec3(node, key + ".angular_velocity");
+    });
+    readMaterial(reader, table, key, context, def.material);
+    return spec;
+}
+
+/// The impulse (and offset) or the target (velocity and angular_velocity) of an entry.
+void readImpulseValue(const TomlReader& reader, const toml::table& table, ImpulseSpec& spec)
+{
+    const std::string& key = spec.label;
+    const toml::node* impulse = table.get("impulse");
+    const toml::node* offset = table.get("offset");
+    const toml::node* velocity = table.get("velocity");
+    const toml::node* angularVelocity = table.get("angular_velocity");
+    const bool isTarget = velocity != nullptr || angularVelocity != nullptr;
+    if (impulse != nullptr && isTarget) {
+        reader.fail(table, key,
+                    "give either impulse (with an optional offset) or a target velocity and "
+                    "angular_velocity, not both");
+    }
+    if (impulse == nullptr && !isTarget) {
+        reader.fail(table, key,
+                    "needs either impulse (with an optional offset) or a target velocity and "
+                    "angular_velocity");
+    }
+    if (impulse != nullptr) {
+        spec.impulse = reader.vec3(*impulse, key + ".impulse");
+        spec.offset = offset == nullptr ? Vec3(0.0) : reader.vec3(*offset, key + ".offset");
+        return;
+    }
+    if (offset != nullptr) {
+        reader.fail(*offset, key + ".offset",
+                    "offset goes with impulse; a target (velocity, angular_velocity) is solved "
+                    "for its own point");
+    }
+    if (velocity == nullptr || angularVelocity == nullptr) {
+        reader.fail(table, key + (velocity == nullptr ? ".velocity" : ".angular_velocity"),
+                    "missing: a target needs both velocity and angular_velocity (give the "
+                    "current value to keep one unchanged)");
+    }
+    spec.targetVelocity = reader.vec3(*velocity, key + ".velocity");
+    spec.targetAngularVelocity = reader.vec3(*angularVelocity, key + ".angular_velocity");
+}
+
+ImpulseSpec readImpulse(const TomlReader& reader, const toml::table& table, std::size_t index)
+{
+    ImpulseSpec spec;
+    spec.label = "impulse[" + std::to_string(index) + "]";
+    const std::string& key = spec.label;
+    reader.checkKeys(table, key, kImpulseKeys);
+    spec.where = reader.locate(table);
+    const toml::node* at = table.get("at");
+    if (at == nullptr) {
+        reader.fail(table, key + ".at", "missing: the time in s at which the impulse acts");
+    }
+    spec.at = reader.nonNegative(*at, key + ".at");
+    const toml::node* body = table.get("body");
+    if (body == nullptr) {
+        reader.fail(table, key + ".body", "missing: the name of the body the impulse acts on");
+    }
+    spec.body = reader.string(*body, key + ".body");
+    readImpulseValue(reader, table, spec);
+    return spec;
+}
+
+/// The array of tables `name` ([[body]], [[impulse]]), or null when absent.
+const toml::array* arrayOfTables(const TomlReader& reader, const toml::table& root,
+                                 std::string_view name)
+{
+    const toml::node* node = root.get(name);
+    if (node == nullptr) {
+        return nullptr;
+    }
+    const toml::array* array = node->as_array();
+    if (array == nullptr || !array->is_array_of_tables()) {
+        reader.fail(*node, std::string(name),
+                    "expected an array of tables ([[" + std::string(name) + "]]), got " +
+                        describeNode(*node));
+    }
+    return array;
+}
+
+std::string bodyNames(const Scenario& scenario)
+{
+    std::string names;
+    for (const BodySpec& body : scenario.bodies) {
+        names += names.empty() ? "" : ", ";
+        names += body.name;
+    }
+    return names;
+}
+
+} // namespace
+
+void readBodies(const TomlReader& reader, const toml::table& root, Scenario& scenario)
+{
+    const toml::array* bodies = arrayOfTables(reader, root, "body");
+    if (bodies == nullptr || bodies->empty()) {
+        throw ScenarioError(bodies == nullptr ? SourceLocation{reader.sourceName(), 0}
+                                              : reader.locate(*bodies),
+                            "body", "a scenario needs at least one [[body]]");
+    }
+    std::map<std::string, std::size_t> indexByName;
+    for (std::size_t i = 0; i < bodies->size(); ++i) {
+        const toml::table& table = *bodies->get(i)->as_table();
+        BodySpec spec = readBody(reader, table, i);
+        const auto [found, inserted] = indexByName.emplace(spec.name, i);
+        if (!inserted) {
+            const toml::node* name = table.get("name");
+            reader.fail(name != nullptr ? *name : static_cast<const toml::node&>(table),
+                        "body[" + std::to_string(i) + "].name",
+                        "duplicate body name \"" + spec.name + "\" (also body[" +
+                            std::to_string(found->second) + "])");
+        }
+        scenario.bodies.push_back(std::move(spec));
+    }
+}
+
+void readImpulses(const TomlReader& reader, const toml::table& root, Scenario& scenario)
+{
+    const toml::array* impulses = arrayOfTables(reader, root, "impulse");
+    if (impulses == nullptr) {
+        return;
+    }
+    for (std::size_t i = 0; i < impulses->size(); ++i) {
+        const toml::table& table = *impulses->get(i)->as_table();
+        ImpulseSpec spec = readImpulse(reader, table, i);
+        const bool known =
+            std::any_of(scenario.bodies.begin(), scenario.bodies.end(),
+                        [&](const BodySpec& body) { return body.name == spec.body; });
+        if (!known) {
+            reader.fail(*table.get("body"), spec.label + ".body",
+                        "no body named \"" + spec.body + "\" (bodies: " + bodyNames(scenario) +
+                            ")");
+        }
+        scenario.impulses.push_back(std::move(spec));
+    }
+    std::stable_sort(scenario.impulses.begin(), scenario.impulses.end(),
+                     [](const ImpulseSpec& a, const ImpulseSpec& b) { return a.at < b.at; });
+}
+
+} // namespace tumble::scenario::detail

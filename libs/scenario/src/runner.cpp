@@ -1,0 +1,118 @@
+#include "tumble/scenario/runner.hpp"
+
+#include "tumble/impulse_target.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace tumble::scenario {
+namespace {
+
+/// Impulse times this close to a step boundary (as a fraction of dt) count as on the boundary,
+/// so an `at` that is a multiple of dt does not split a step into a sliver and the rest.
+constexpr Real kBoundaryFraction = 1e-9;
+
+void appendEvents(const World& world, StepReport& report)
+{
+    const auto collisions = world.collisions();
+    report.collisions.insert(report.collisions.end(), collisions.begin(), collisions.end());
+    const auto restEvents = world.restEvents();
+    report.restEvents.insert(report.restEvents.end(), restEvents.begin(), restEvents.end());
+}
+
+std::size_t bodyIndexByName(const Scenario& scenario, const ImpulseSpec& spec)
+{
+    const auto found = std::find_if(scenario.bodies.begin(), scenario.bodies.end(),
+                                    [&](const BodySpec& body) { return body.name == spec.body; });
+    if (found == scenario.bodies.end()) {
+        throw ScenarioError(spec.where, spec.label + ".body", "no body named \"" + spec.body + "\"");
+    }
+    return static_cast<std::size_t>(found - scenario.bodies.begin());
+}
+
+} // namespace
+
+Runner::Runner(const Scenario& scenario) : m_scenario(scenario), m_built(buildWorld(m_scenario)) {}
+
+const std::string& Runner::bodyName(std::size_t index) const
+{
+    return m_scenario.bodies.at(index).name;
+}
+
+std::size_t Runner::bodyIndex(BodyId id) const
+{
+    const auto found = std::find(m_built.bodies.begin(), m_built.bodies.end(), id);
+    if (found == m_built.bodies.end()) {
+        throw std::out_of_range("tumble::scenario::Runner::bodyIndex: not a body of this scenario");
+    }
+    return static_cast<std::size_t>(found - m_built.bodies.begin());
+}
+
+Real Runner::time() const { return static_cast<Real>(m_stepCount) * m_scenario.dt; }
+
+StepReport Runner::step()
+{
+    const Real dt = m_scenario.dt;
+    const Real tolerance = kBoundaryFraction * dt;
+    const Real stepStart = time();
+    const Real stepEnd = static_cast<Real>(m_stepCount + 1) * dt;
+    StepReport report;
+
+    // walk the impulses due before the end of this step, stepping up to each one in turn
+    Real current = stepStart;
+    while (m_nextImpulse < m_scenario.impulses.size() &&
+           m_scenario.impulses[m_nextImpulse].at < stepEnd - tolerance) {
+        const ImpulseSpec& spec = m_scenario.impulses[m_nextImpulse];
+        if (spec.at > current + tolerance) {
+            m_built.world.step(spec.at - current);
+            appendEvents(m_built.world, report);
+            current = spec.at;
+        }
+
+        const std::size_t index = bodyIndexByName(m_scenario, spec);
+        const BodyId id = m_built.bodies[index];
+        const Body& body = m_built.world.body(id);
+        AppliedImpulse applied;
+        applied.time = spec.at;
+        applied.bodyIndex = index;
+        applied.label = spec.label;
+        applied.velocityBefore = body.linearVelocity;
+        applied.angularVelocityBefore = body.angularVelocity;
+
+        // a target is turned into one impulse at one point, or rejected with the reason
+        if (spec.isTarget()) {
+            const Vec3 targetAngularVelocity =
+                spec.targetAngularVelocity.value_or(body.angularVelocity);
+            const ImpulseTarget solved =
+                solveImpulseTarget(body, *spec.targetVelocity, targetAngularVelocity);
+            if (solved.status != ImpulseTargetStatus::Reached) {
+                throw ScenarioError(spec.where, spec.label,
+                                    std::string("target cannot be reached by one impulse: ") +
+                                        describe(solved.status));
+            }
+            applied.solvedFromTarget = true;
+            applied.impulse = solved.impulse;
+            applied.offset = solved.offset;
+        } else {
+            applied.impulse = spec.impulse.value_or(Vec3(0.0));
+            applied.offset = spec.offset.value_or(Vec3(0.0));
+        }
+        const Vec3 worldPoint = body.position + applied.offset;
+        m_built.world.applyImpulse(id, applied.impulse, worldPoint);
+
+        const Body& after = m_built.world.body(id);
+        applied.velocityAfter = after.linearVelocity;
+        applied.angularVelocityAfter = after.angularVelocity;
+        report.impulses.push_back(applied);
+        ++m_nextImpulse;
+    }
+
+    // the rest of the step (all of it when no impulse split it)
+    m_built.world.step(stepEnd - current);
+    appendEvents(m_built.world, report);
+    ++m_stepCount;
+    return report;
+}
+
+} // namespace tumble::scenario

@@ -1,0 +1,32 @@
+// The keys a scenario file may use, table by table (docs/scenario-format.md lists them all).
+#pragma once
+
+#include <array>
+#include <string_view>
+
+namespace tumble::scenario::detail {
+
+inline constexpr std::array<std::string_view, 4> kTopLevelKeys{
+    "world", "ground", "body", "impulse"};
+
+inline constexpr std::array<std::string_view, 12> kWorldKeys{
+    "gravity", "dt", "duration", "integrator", "response", "contact_tolerance",
+    "restitution_threshold", "solver_iterations", "sleep", "sleep_linear_speed",
+    "sleep_angular_speed", "sleep_time"};
+
+inline constexpr std::array<std::string_view, 1> kGroundKeys{"height"};
+
+inline constexpr std::array<std::string_view, 11> kBodyKeys{
+    "name", "size", "scale", "mass", "position", "orientation", "velocity", "angular_velocity",
+    "elasticity", "friction", "static_friction"};
+
+inline constexpr std::array<std::string_view, 6> kImpulseKeys{
+    "at", "body", "impulse", "offset", "velocity", "angular_velocity"};
+
+inline constexpr std::array<std::string_view, 2> kAxisAngleKeys{"axis", "degrees"};
+
+/// Values of world.integrator and world.response, in the order of the library's enumerators.
+inline constexpr std::array<std::string_view, 2> kIntegratorNames{"exact", "handout"};
+inline constexpr std::array<std::string_view, 2> kResponseNames{"sequential", "average"};
+
+} // namespace tumble::scenario::detail

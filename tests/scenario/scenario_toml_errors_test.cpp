@@ -1,0 +1,328 @@
+// Reading scenario files: each kind of bad input throws a ScenarioError whose one-line message
+// names the file, the line and the key.
+#include "tumble/scenario/scenario.hpp"
+
+#include "scenario/expect_scenario_error.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+namespace tumble::scenario {
+namespace {
+
+using test_support::failsWith;
+using test_support::parseError;
+
+const std::filesystem::path kScenarioDir = TUMBLE_SCENARIO_DIR;
+
+TEST(ScenarioTomlErrors, MissingFileNamesTheFile)
+{
+    const std::filesystem::path missing = kScenarioDir / "no_such_scenario.toml";
+    try {
+        (void)loadScenario(missing);
+        FAIL() << "loaded a missing file";
+    } catch (const ScenarioError& error) {
+        const std::string message = error.what();
+        EXPECT_TRUE(message.starts_with(missing.string() + ": ")) << message;
+        EXPECT_NE(message.find("cannot open"), std::string::npos) << message;
+        EXPECT_EQ(error.where().line, 0);
+    }
+}
+
+TEST(ScenarioTomlErrors, DirectoryIsNotAScenario)
+{
+    EXPECT_THROW((void)loadScenario(kScenarioDir), ScenarioError);
+}
+
+TEST(ScenarioTomlErrors, SyntaxErrorGivesTheLine)
+{
+    EXPECT_TRUE(
+        failsWith("[[body]]\nname = \"rb\"\nmass = \n", "scene.toml:3: ", "TOML syntax error"));
+}
+
+TEST(ScenarioTomlErrors, UnknownKeySuggestsTheClosestKnownOne)
+{
+    EXPECT_TRUE(failsWith("[[body]]\nname = \"rb\"\nelasticty = 0.5\n",
+                          "scene.toml:3: body[0].elasticty: ",
+                          "unknown key 'elasticty' (did you mean 'elasticity'?)"));
+}
+
+TEST(ScenarioTomlErrors, UnknownKeyFarFromAnyListsTheKnownKeys)
+{
+    EXPECT_TRUE(failsWith("[world]\ndt = 0.01\ncolour = 3\n[[body]]\n",
+                          "scene.toml:3: world.colour: ", "known keys: gravity dt duration"));
+}
+
+TEST(ScenarioTomlErrors, UnknownTopLevelKey)
+{
+    EXPECT_TRUE(failsWith("mass = 2\n[[body]]\n", "scene.toml:1: mass: ", "unknown key 'mass'"));
+}
+
+TEST(ScenarioTomlErrors, UnknownKeyIsTheFirstInTheFile)
+{
+    EXPECT_TRUE(
+        failsWith("[[body]]\nzzz = 1\naaa = 2\n", "scene.toml:2: body[0].zzz: ", "unknown key"));
+}
+
+TEST(ScenarioTomlErrors, UnknownGroundKey)
+{
+    EXPECT_TRUE(failsWith("[ground]\nheigth = 1\n[[body]]\n",
+                          "scene.toml:2: ground.heigth: ", "(did you mean 'height'?)"));
+}
+
+TEST(ScenarioTomlErrors, UnknownKeyInAxisAngle)
+{
+    EXPECT_TRUE(
+        failsWith("[[body]]\norientation = { axis = [0, 0, 1], degree = 30 }\n",
+                  "scene.toml:2: body[0].orientation.degree: ", "(did you mean 'degrees'?)"));
+}
+
+TEST(ScenarioTomlErrors, StringWhereNumberExpected)
+{
+    EXPECT_TRUE(
+        failsWith("[[body]]\nname = \"rb\"\nmass = \"heavy\"\n",
+                  "scene.toml:3: body[0].mass: ", "expected a number, got a string (\"heavy\")"));
+}
+
+TEST(ScenarioTomlErrors, ArrayOfWrongLength)
+{
+    EXPECT_TRUE(failsWith("[[body]]\nposition = [1, 2]\n", "scene.toml:2: body[0].position: ",
+                          "expected an array of 3 numbers [x, y, z], got an array of 2 values"));
+}
+
+TEST(ScenarioTomlErrors, WorldMustBeATable)
+{
+    EXPECT_TRUE(failsWith("world = 3\n[[body]]\n", "scene.toml:1: world: ", "expected a table"));
+}
+
+TEST(ScenarioTomlErrors, BodyMustBeAnArrayOfTables)
+{
+    EXPECT_TRUE(failsWith("[body]\nmass = 1\n",
+                          "scene.toml:1: body: ", "expected an array of tables ([[body]])"));
+}
+
+TEST(ScenarioTomlErrors, NonPositiveMass)
+{
+    EXPECT_TRUE(failsWith("[[body]]\nname = \"rb\"\nmass = 0\n",
+                          "scene.toml:3: body[0].mass: ", "must be > 0, got 0 (body \"rb\")"));
+}
+
+TEST(ScenarioTomlErrors, NonPositiveSize)
+{
+    EXPECT_TRUE(failsWith("[[body]]\nsize = [2, -6, 2]\n", "scene.toml:2: body[0].size: ",
+                          "every component must be > 0, got [2, -6, 2]"));
+}
+
+TEST(ScenarioTomlErrors, NonPositiveScale)
+{
+    EXPECT_TRUE(failsWith("[[body]]\n\nscale = [1, 0, 1]\n",
+                          "scene.toml:3: body[0].scale: ", "every component must be > 0"));
+}
+
+TEST(ScenarioTomlErrors, SizeAndScaleTogether)
+{
+    EXPECT_TRUE(failsWith("[[body]]\nsize = [2, 6, 2]\nscale = [1, 3, 1]\n",
+                          "scene.toml:3: body[0].scale: ", "give size or scale, not both"));
+}
+
+TEST(ScenarioTomlErrors, NanValue)
+{
+    EXPECT_TRUE(failsWith("[[body]]\nmass = nan\n",
+                          "scene.toml:2: body[0].mass: ", "must be finite, got nan"));
+}
+
+TEST(ScenarioTomlErrors, InfiniteVectorComponent)
+{
+    EXPECT_TRUE(failsWith("[[body]]\n\nvelocity = [0, -inf, 0]\n",
+                          "scene.toml:3: body[0].velocity[1]: ", "must be finite, got -inf"));
+}
+
+TEST(ScenarioTomlErrors, QuaternionFarFromUnitLength)
+{
+    EXPECT_TRUE(failsWith("[[body]]\norientation = [1, 0, 0, 0.1]\n",
+                          "scene.toml:2: body[0].orientation: ", "not a unit quaternion"));
+}
+
+TEST(ScenarioTomlErrors, ZeroRotationAxis)
+{
+    EXPECT_TRUE(failsWith("[[body]]\norientation = { axis = [0, 0, 0], degrees = 30 }\n",
+                          "scene.toml:2: body[0].orientation.axis: ", "must be a nonzero vector"));
+}
+
+TEST(ScenarioTomlErrors, AxisAngleWithoutDegrees)
+{
+    EXPECT_TRUE(failsWith("[[body]]\norientation = { axis = [0, 0, 1] }\n",
+                          "scene.toml:2: body[0].orientation: ", "needs both axis and degrees"));
+}
+
+TEST(ScenarioTomlErrors, EmptyBodyName)
+{
+    EXPECT_TRUE(
+        failsWith("[[body]]\nname = \"\"\n", "scene.toml:2: body[0].name: ", "must not be empty"));
+}
+
+TEST(ScenarioTomlErrors, DuplicateBodyNames)
+{
+    EXPECT_TRUE(
+        failsWith("[[body]]\nname = \"rb\"\n[[body]]\nname = \"rb\"\n",
+                  "scene.toml:4: body[1].name: ", "duplicate body name \"rb\" (also body[0])"));
+}
+
+TEST(ScenarioTomlErrors, LineBreakInQuotedTextKeepsTheMessageOnOneLine)
+{
+    EXPECT_TRUE(failsWith("[[body]]\nname = \"a\\nb\"\n[[body]]\nname = \"a\\nb\"\n",
+                          "scene.toml:4: body[1].name: ", "duplicate body name \"a\\nb\""));
+}
+
+TEST(ScenarioTomlErrors, ExplicitNameClashingWithADefaultName)
+{
+    EXPECT_TRUE(failsWith("[[body]]\n[[body]]\nname = \"body1\"\n",
+                          "scene.toml:3: body[1].name: ", "duplicate body name \"body1\""));
+}
+
+TEST(ScenarioTomlErrors, NoBody)
+{
+    EXPECT_TRUE(failsWith("[world]\ndt = 0.01\n",
+                          "scene.toml: body: ", "a scenario needs at least one [[body]]"));
+}
+
+TEST(ScenarioTomlErrors, ImpulseOnUnknownBody)
+{
+    EXPECT_TRUE(failsWith("[[body]]\nname = \"rb\"\n"
+                          "[[impulse]]\nat = 1\nbody = \"box\"\nimpulse = [1, 0, 0]\n",
+                          "scene.toml:5: impulse[0].body: ", "no body named \"box\" (bodies: rb)"));
+}
+
+TEST(ScenarioTomlErrors, ImpulseWithBothImpulseAndTarget)
+{
+    EXPECT_TRUE(failsWith("[[body]]\nname = \"rb\"\n"
+                          "[[impulse]]\nat = 1\nbody = \"rb\"\nimpulse = [1, 0, 0]\n"
+                          "velocity = [0, 0, 0]\nangular_velocity = [0, 0, 0]\n",
+                          "scene.toml:3: impulse[0]: ", "not both"));
+}
+
+TEST(ScenarioTomlErrors, ImpulseWithNeitherImpulseNorTarget)
+{
+    EXPECT_TRUE(failsWith("[[body]]\nname = \"rb\"\n[[impulse]]\nat = 1\nbody = \"rb\"\n",
+                          "scene.toml:3: impulse[0]: ",
+                          "needs either impulse (with an optional offset) or a target"));
+}
+
+TEST(ScenarioTomlErrors, TargetNeedsBothVelocities)
+{
+    EXPECT_TRUE(failsWith("[[body]]\nname = \"rb\"\n"
+                          "[[impulse]]\nat = 1\nbody = \"rb\"\nvelocity = [0, 0, 0]\n",
+                          "scene.toml:3: impulse[0].angular_velocity: ",
+                          "a target needs both velocity and angular_velocity"));
+}
+
+TEST(ScenarioTomlErrors, OffsetWithATarget)
+{
+    EXPECT_TRUE(failsWith("[[body]]\nname = \"rb\"\n"
+                          "[[impulse]]\nat = 1\nbody = \"rb\"\nvelocity = [0, 0, 0]\n"
+                          "angular_velocity = [0, 0, 1]\noffset = [0, 1, 0]\n",
+                          "scene.toml:8: impulse[0].offset: ", "offset goes with impulse"));
+}
+
+TEST(ScenarioTomlErrors, NegativeImpulseTime)
+{
+    EXPECT_TRUE(failsWith("[[body]]\nname = \"rb\"\n"
+                          "[[impulse]]\nat = -0.5\nbody = \"rb\"\nimpulse = [1, 0, 0]\n",
+                          "scene.toml:4: impulse[0].at: ", "must be >= 0, got -0.5"));
+}
+
+TEST(ScenarioTomlErrors, ImpulseWithoutTime)
+{
+    EXPECT_TRUE(failsWith("[[body]]\nname = \"rb\"\n"
+                          "[[impulse]]\nbody = \"rb\"\nimpulse = [1, 0, 0]\n",
+                          "scene.toml:3: impulse[0].at: ", "missing"));
+}
+
+TEST(ScenarioTomlErrors, ZeroTimeStep)
+{
+    EXPECT_TRUE(
+        failsWith("[world]\ndt = 0\n[[body]]\n", "scene.toml:2: world.dt: ", "must be > 0, got 0"));
+}
+
+TEST(ScenarioTomlErrors, NonFiniteTimeStep)
+{
+    EXPECT_TRUE(failsWith("[world]\n\ndt = inf\n[[body]]\n",
+                          "scene.toml:3: world.dt: ", "must be finite, got inf"));
+}
+
+TEST(ScenarioTomlErrors, NegativeDuration)
+{
+    EXPECT_TRUE(failsWith("[world]\nduration = -1\n[[body]]\n",
+                          "scene.toml:2: world.duration: ", "must be > 0, got -1"));
+}
+
+TEST(ScenarioTomlErrors, ElasticityAboveOne)
+{
+    EXPECT_TRUE(failsWith("[[body]]\nelasticity = 1.5\n", "scene.toml:2: body[0].elasticity: ",
+                          "must be in [0, 1], got 1.5 (body \"body1\")"));
+}
+
+TEST(ScenarioTomlErrors, NegativeFriction)
+{
+    EXPECT_TRUE(failsWith("[[body]]\nfriction = -0.1\n",
+                          "scene.toml:2: body[0].friction: ", "must be >= 0, got -0.1"));
+}
+
+TEST(ScenarioTomlErrors, StaticFrictionBelowFriction)
+{
+    EXPECT_TRUE(
+        failsWith("[[body]]\nfriction = 0.5\nstatic_friction = 0.3\n",
+                  "scene.toml:3: body[0].static_friction: ", "must be >= friction (0.5), got 0.3"));
+}
+
+TEST(ScenarioTomlErrors, BadIntegratorListsTheAllowedValues)
+{
+    EXPECT_TRUE(failsWith("[world]\nintegrator = \"euler\"\n[[body]]\n",
+                          "scene.toml:2: world.integrator: ",
+                          "must be one of \"exact\", \"handout\", got \"euler\""));
+}
+
+TEST(ScenarioTomlErrors, BadResponseListsTheAllowedValues)
+{
+    EXPECT_TRUE(
+        failsWith("[world]\nresponse = \"impulse\"\n[[body]]\n",
+                  "scene.toml:2: world.response: ", "must be one of \"sequential\", \"average\""));
+}
+
+TEST(ScenarioTomlErrors, FloatSolverIterations)
+{
+    EXPECT_TRUE(failsWith("[world]\nsolver_iterations = 2.5\n[[body]]\n",
+                          "scene.toml:2: world.solver_iterations: ", "expected an integer"));
+}
+
+TEST(ScenarioTomlErrors, ZeroSolverIterations)
+{
+    EXPECT_TRUE(failsWith("[world]\nsolver_iterations = 0\n[[body]]\n",
+                          "scene.toml:2: world.solver_iterations: ", "must be between 1"));
+}
+
+TEST(ScenarioTomlErrors, NonPositiveContactTolerance)
+{
+    EXPECT_TRUE(failsWith("[world]\ncontact_tolerance = 0\n[[body]]\n",
+                          "scene.toml:2: world.contact_tolerance: ", "must be > 0"));
+}
+
+TEST(ScenarioTomlErrors, SleepMustBeABoolean)
+{
+    EXPECT_TRUE(failsWith("[world]\nsleep = \"yes\"\n[[body]]\n",
+                          "scene.toml:2: world.sleep: ", "expected true or false"));
+}
+
+TEST(ScenarioTomlErrors, ErrorCarriesLocationAndKey)
+{
+    const auto error = parseError("[[body]]\nname = \"rb\"\nmass = -2\n");
+    ASSERT_TRUE(error.has_value());
+    EXPECT_EQ(error->where().file, "scene.toml");
+    EXPECT_EQ(error->where().line, 3);
+    EXPECT_EQ(error->key(), "body[0].mass");
+}
+
+} // namespace
+} // namespace tumble::scenario
