@@ -20,7 +20,7 @@ struct ImpactOutcome;
 /// How orientation and angular velocity advance in free flight.
 enum class Integrator : std::uint8_t {
     /// Angular momentum is conserved exactly; the rotation is a symmetric splitting into exact
-    /// rotations about the body axes (docs/physics/02-integration.md). Translation under gravity
+    /// rotations about the momentum and two body axes (docs/physics/02-integration.md). Translation under gravity
     /// is exact. The default.
     Exact,
     /// The handouts' update: R += dt [w]x R (re-orthonormalised), w held constant in flight.

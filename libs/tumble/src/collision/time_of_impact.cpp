@@ -1,4 +1,4 @@
-// Conservative advancement (Mirtich 1996, ch. 4) for the vertices of a cuboid against a plane.
+// Conservative advancement (Mirtich 1996) for the vertices of a cuboid against a plane.
 #include "collision/time_of_impact.hpp"
 
 #include "collision/collide_cuboid_plane.hpp"
@@ -48,17 +48,13 @@ Real timeOfImpact(const SubstepMotion& motion, const Vec3& halfExtents, const Pl
     if (touchingVertices == 0xffu) {
         return motion.tau;
     }
-    // (4.4): |dh/ds| <= max |v_n| + |w|max |r|max. The velocity is linear in s, so its normal
-    // component is largest at an end; torque-free |w| never exceeds |L| / I_min.
+    // (4.4): |dh/ds| <= max |v_n| + (turning rate) |r|max. The velocity is linear in s, so its
+    // normal component is largest at an end; the turning rate is bounded by the integrator.
     const Vec3 n = Plane::normal();
-    const Real normalSpeed =
-        std::max(std::abs(glm::dot(n, motion.velocityStart)), std::abs(glm::dot(n, motion.velocityEnd)));
-    const Vec3 bodyMomentum =
-        motion.inertiaBody * (glm::conjugate(motion.start.orientation) * motion.angularVelocity);
-    const Real smallestInertia =
-        std::min({motion.inertiaBody.x, motion.inertiaBody.y, motion.inertiaBody.z});
-    const Real spin =
-        std::max(glm::length(motion.angularVelocity), glm::length(bodyMomentum) / smallestInertia);
+    const Real normalSpeed = std::max(std::abs(glm::dot(n, motion.velocityStart)),
+                                      std::abs(glm::dot(n, motion.velocityEnd)));
+    const Real spin = rotationRateBound(motion.start.orientation, motion.angularVelocity,
+                                        motion.inertiaBody, motion.integrator);
     const Real approachBound = normalSpeed + spin * glm::length(halfExtents);
     if (approachBound == 0.0) {
         return motion.tau;

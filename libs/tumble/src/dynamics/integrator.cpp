@@ -41,36 +41,49 @@ void turnAboutMomentum(Quat& orientation, const Vec3& bodyMomentum, Real referen
     orientation = orientation * axisAngle(bodyMomentum / momentum, h * momentum / referenceInertia);
 }
 
-void rotateExact(Quat& orientation, Vec3& angularVelocity, const Vec3& inertiaBody, Real dt)
-{
-    // Reference moment: one of the two closest principal moments (2.7). For a symmetric body the
-    // other one's term vanishes and the remaining flows commute, so the split is exact.
+/// The split of (2.7): the reference moment is one of the two closest principal moments; for a
+/// symmetric body the other one's term vanishes and the remaining flows commute, so the split is
+/// exact.
+struct RotationSplit {
     int reference = 0;
     int near = 1;
     int far = 2;
+    Real nearCoefficient = 0.0;
+    Real farCoefficient = 0.0;
+};
+
+RotationSplit chooseSplit(const Vec3& inertiaBody)
+{
+    RotationSplit split;
     Real closest = std::abs(inertiaBody.x - inertiaBody.y);
     if (std::abs(inertiaBody.x - inertiaBody.z) < closest) {
         closest = std::abs(inertiaBody.x - inertiaBody.z);
-        near = 2;
-        far = 1;
+        split.near = 2;
+        split.far = 1;
     }
     if (std::abs(inertiaBody.y - inertiaBody.z) < closest) {
-        reference = 1;
-        near = 2;
-        far = 0;
+        split.reference = 1;
+        split.near = 2;
+        split.far = 0;
     }
-    const Real referenceInertia = inertiaBody[reference];
-    const Real nearCoefficient = 1.0 / inertiaBody[near] - 1.0 / referenceInertia;
-    const Real farCoefficient = 1.0 / inertiaBody[far] - 1.0 / referenceInertia;
+    const Real referenceInverse = 1.0 / inertiaBody[split.reference];
+    split.nearCoefficient = 1.0 / inertiaBody[split.near] - referenceInverse;
+    split.farCoefficient = 1.0 / inertiaBody[split.far] - referenceInverse;
+    return split;
+}
 
+void rotateExact(Quat& orientation, Vec3& angularVelocity, const Vec3& inertiaBody, Real dt)
+{
+    const RotationSplit split = chooseSplit(inertiaBody);
+    const Real referenceInertia = inertiaBody[split.reference];
     // (2.4): body-frame angular momentum Pi = I0 R^T w; the world momentum R Pi is what every
     // sub-flow below conserves.
     Vec3 bodyMomentum = inertiaBody * (glm::conjugate(orientation) * angularVelocity);
     // Strang composition (2.7): A(h/2) B(h/2) C(h) B(h/2) A(h/2), second order and symmetric.
     turnAboutMomentum(orientation, bodyMomentum, referenceInertia, 0.5 * dt);
-    turnAboutBodyAxis(orientation, bodyMomentum, near, nearCoefficient, 0.5 * dt);
-    turnAboutBodyAxis(orientation, bodyMomentum, far, farCoefficient, dt);
-    turnAboutBodyAxis(orientation, bodyMomentum, near, nearCoefficient, 0.5 * dt);
+    turnAboutBodyAxis(orientation, bodyMomentum, split.near, split.nearCoefficient, 0.5 * dt);
+    turnAboutBodyAxis(orientation, bodyMomentum, split.far, split.farCoefficient, dt);
+    turnAboutBodyAxis(orientation, bodyMomentum, split.near, split.nearCoefficient, 0.5 * dt);
     turnAboutMomentum(orientation, bodyMomentum, referenceInertia, 0.5 * dt);
     orientation = glm::normalize(orientation);
     angularVelocity = orientation * (bodyMomentum / inertiaBody);
@@ -98,6 +111,21 @@ void integrateRotation(Quat& orientation, Vec3& angularVelocity, const Vec3& ine
     case Integrator::Exact: rotateExact(orientation, angularVelocity, inertiaBody, dt); break;
     case Integrator::Handout: rotateHandout(orientation, angularVelocity, dt); break;
     }
+}
+
+Real rotationRateBound(const Quat& orientation, const Vec3& angularVelocity,
+                       const Vec3& inertiaBody, Integrator integrator)
+{
+    if (integrator == Integrator::Handout) {
+        return glm::length(angularVelocity);
+    }
+    // Each piece of (2.7) turns the body at a constant rate; their sum bounds the composition.
+    // The body-frame momentum's components keep their magnitudes bounded by |Pi| throughout.
+    const RotationSplit split = chooseSplit(inertiaBody);
+    const Vec3 bodyMomentum = inertiaBody * (glm::conjugate(orientation) * angularVelocity);
+    const Real momentum = glm::length(bodyMomentum);
+    return momentum * (1.0 / inertiaBody[split.reference] + std::abs(split.nearCoefficient) +
+                       std::abs(split.farCoefficient));
 }
 
 void integrateRotation(Body& body, Real dt, Integrator integrator)

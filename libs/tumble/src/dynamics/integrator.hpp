@@ -13,6 +13,11 @@ namespace tumble {
 void integrateRotation(Quat& orientation, Vec3& angularVelocity, const Vec3& inertiaBody, Real dt,
                        Integrator integrator);
 
+/// An upper bound on the rate at which integrateRotation turns the body over any step length,
+/// rad/s (used by the time of impact, docs/physics/04-detection.md, (4.4)).
+Real rotationRateBound(const Quat& orientation, const Vec3& angularVelocity,
+                       const Vec3& inertiaBody, Integrator integrator);
+
 /// Same, on a body, keeping its world inverse inertia consistent with the new orientation.
 void integrateRotation(Body& body, Real dt, Integrator integrator);
 
