@@ -24,8 +24,16 @@ std::string formatReal(Real value)
 
 std::string formatVec3(const Vec3& value)
 {
-    return "[" + formatReal(value.x) + ", " + formatReal(value.y) + ", " + formatReal(value.z) +
-           "]";
+    // Appended piece by piece: GCC 12 at -O3 warns (-Wrestrict, a false positive) on a chain of
+    // operator+ that starts from a literal.
+    std::string text = "[";
+    text += formatReal(value.x);
+    text += ", ";
+    text += formatReal(value.y);
+    text += ", ";
+    text += formatReal(value.z);
+    text += "]";
+    return text;
 }
 
 int editDistance(std::string_view a, std::string_view b)

@@ -26,7 +26,7 @@ constexpr Real kImpactTolerance = 1e-4;
 /// penetration correction, so a pathological case cannot stall a step.
 constexpr int kMaxSubsteps = 32;
 
-bool isValidDef(const BodyDef& def)
+[[maybe_unused]] bool isValidDef(const BodyDef& def)
 {
     return std::isfinite(def.mass) && def.mass > 0.0 && isFinite(def.shape.size) &&
            def.shape.size.x > 0.0 && def.shape.size.y > 0.0 && def.shape.size.z > 0.0 &&
@@ -407,13 +407,16 @@ void World::updateRest(BodyId id, Slot& slot, Real dt)
                       glm::length(body.linearVelocity) < m_settings.sleepLinearSpeed &&
                       glm::length(body.angularVelocity) < m_settings.sleepAngularSpeed;
     const Real slowBefore = body.slowTime;
+    if (slow && slowBefore == 0.0) {
+        slot.slowSince = m_time + dt;
+    }
     body.slowTime = slow ? body.slowTime + dt : 0.0;
     if (slowBefore >= m_settings.sleepTime || body.slowTime < m_settings.sleepTime) {
         return;
     }
     // The body has just stayed slow for sleepTime: it is at rest since it became slow.
-    m_restEvents.push_back(RestEvent{id, m_time + dt - body.slowTime,
-                                     faceAlong(body.orientation, -Plane::normal())});
+    m_restEvents.push_back(
+        RestEvent{id, slot.slowSince, faceAlong(body.orientation, -Plane::normal())});
     if (m_settings.allowSleep) {
         body.asleep = true;
         body.linearVelocity = Vec3(0.0);

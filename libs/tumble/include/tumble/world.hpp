@@ -67,7 +67,7 @@ struct WorldSettings {
 /// A body that has just come to rest.
 struct RestEvent {
     BodyId body{};
-    /// Time at which the body became slow and stayed so, s.
+    /// End of the first step after which the body was slow and stayed so, s.
     Real time = 0.0;
     /// The face lying on the ground.
     CuboidFace faceDown = CuboidFace::MinusY;
@@ -127,6 +127,8 @@ private:
         bool alive = false;
         /// Whether any vertex touched the ground at the end of the last step.
         bool touchingGround = false;
+        /// End of the first step of the current slow spell, s.
+        Real slowSince = 0.0;
     };
 
     Body& mutableBody(BodyId id);
