@@ -1,0 +1,260 @@
+#include "console.hpp"
+
+#include "tumble/scenario/scenario.hpp"
+#include "tumble/shape.hpp"
+
+// glm::to_string lives in an experimental extension; only the CLI uses it, for the handouts'
+// console format.
+#define GLM_ENABLE_EXPERIMENTAL
+#include <glm/gtx/string_cast.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <iostream>
+#include <ostream>
+#include <vector>
+
+namespace tumble::cli {
+namespace {
+
+/// Components smaller than this print as 0.000000 anyway; snapping them to +0 avoids "-0.000000".
+constexpr float kPrintZero = 5e-7f;
+
+float printable(Real value)
+{
+    const auto single = static_cast<float>(value);
+    return std::fabs(single) < kPrintZero ? 0.0f : single;
+}
+
+glm::vec3 printable(const Vec3& v) { return {printable(v.x), printable(v.y), printable(v.z)}; }
+
+std::string formatQuat(const Quat& q)
+{
+    return glm::to_string(glm::quat(printable(q.w), printable(q.x), printable(q.y), printable(q.z)));
+}
+
+std::string formatPrintf(const char* format, Real value)
+{
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, format, value);
+    return buffer;
+}
+
+/// "1/240" when dt is the reciprocal of a whole number of steps per second, else empty.
+std::string reciprocalForm(Real dt)
+{
+    const Real perSecond = 1.0 / dt;
+    const Real rounded = std::round(perSecond);
+    if (rounded < 1.0 || std::fabs(perSecond - rounded) > 1e-9 * rounded) {
+        return {};
+    }
+    return " (1/" + formatPrintf("%.0f", rounded) + " s)";
+}
+
+std::string timePrefix(Real time) { return "t = " + formatFixed(time) + " s  "; }
+
+} // namespace
+
+std::string formatVec3(const Vec3& v) { return glm::to_string(printable(v)); }
+
+std::string formatMat3(const Mat3& m)
+{
+    return glm::to_string(glm::mat3(printable(m[0]), printable(m[1]), printable(m[2])));
+}
+
+std::string formatFixed(Real value)
+{
+    return formatPrintf("%.6f", std::fabs(value) < static_cast<Real>(kPrintZero) ? 0.0 : value);
+}
+
+std::string formatFull(Real value) { return formatPrintf("%.17g", value); }
+
+const char* integratorName(Integrator integrator)
+{
+    switch (integrator) {
+    case Integrator::Exact:
+        return "exact";
+    case Integrator::Handout:
+        return "handout";
+    }
+    return "unknown";
+}
+
+const char* responseName(ContactResponse response)
+{
+    switch (response) {
+    case ContactResponse::Sequential:
+        return "sequential";
+    case ContactResponse::Average:
+        return "average";
+    }
+    return "unknown";
+}
+
+void Console::printHeader(const scenario::Runner& runner, long long stepCount) const
+{
+    const scenario::Scenario& scenario = runner.scenario();
+    const WorldSettings& settings = runner.world().settings();
+    m_out << "scenario: " << scenario.sourceName << '\n';
+    m_out << "dt = " << formatPrintf("%.9g", scenario.dt) << " s" << reciprocalForm(scenario.dt)
+          << ", duration = " << formatFixed(scenario.duration) << " s (" << stepCount
+          << " steps), integrator = " << integratorName(settings.integrator)
+          << ", response = " << responseName(settings.response) << '\n';
+    m_out << "gravity = " << formatVec3(settings.gravity) << " m/s^2, ground: ";
+    if (scenario.ground) {
+        m_out << "plane y = " << formatFixed(scenario.ground->height) << " m\n";
+    } else {
+        m_out << "none\n";
+    }
+
+    // the handouts ask for the inverse inertia of each body, printed with glm::to_string
+    for (std::size_t i = 0; i < runner.bodies().size(); ++i) {
+        const Body& body = runner.world().body(runner.bodies()[i]);
+        const Vec3& inv = body.invInertiaBody;
+        const Mat3 invInertiaBody(Vec3(inv.x, 0.0, 0.0), Vec3(0.0, inv.y, 0.0), Vec3(0.0, 0.0, inv.z));
+        m_out << "body " << runner.bodyName(i) << ": mass = " << formatFixed(body.mass)
+              << " kg, size = " << formatVec3(body.shape.size) << " m, elasticity = "
+              << formatFixed(body.material.restitution) << ", friction = "
+              << formatFixed(body.material.friction) << '\n';
+        m_out << "  inverse inertia (body frame):  " << formatMat3(invInertiaBody) << '\n';
+        m_out << "  inverse inertia (world frame): " << formatMat3(body.invInertiaWorld) << '\n';
+    }
+}
+
+void Console::printStep(const scenario::Runner& runner, const scenario::StepReport& report) const
+{
+    if (m_quiet) {
+        return;
+    }
+    // an impulse inside a step splits it, so events of one step are merged back into time order
+    struct Entry {
+        Real time;
+        int kind;
+        std::size_t index;
+    };
+    std::vector<Entry> entries;
+    for (std::size_t i = 0; i < report.impulses.size(); ++i) {
+        entries.push_back({report.impulses[i].time, 0, i});
+    }
+    for (std::size_t i = 0; i < report.collisions.size(); ++i) {
+        entries.push_back({report.collisions[i].time, 1, i});
+    }
+    for (std::size_t i = 0; i < report.restEvents.size(); ++i) {
+        entries.push_back({report.restEvents[i].time, 2, i});
+    }
+    std::stable_sort(entries.begin(), entries.end(),
+                     [](const Entry& a, const Entry& b) { return a.time < b.time; });
+    for (const Entry& entry : entries) {
+        if (entry.kind == 0) {
+            printImpulse(runner, report.impulses[entry.index]);
+        } else if (entry.kind == 1) {
+            printCollision(runner, report.collisions[entry.index]);
+        } else {
+            printRest(runner, report.restEvents[entry.index]);
+        }
+    }
+}
+
+void Console::printUnusedImpulses(const scenario::Runner& runner, Real endTime) const
+{
+    if (m_quiet) {
+        return;
+    }
+    // the runner applies an impulse within 1e-9 dt of a step's start in that step
+    const Real lastApplied = endTime - 1e-9 * runner.scenario().dt;
+    for (const scenario::ImpulseSpec& spec : runner.scenario().impulses) {
+        if (spec.at >= lastApplied) {
+            m_out << "note: " << spec.label << " at t = " << formatFixed(spec.at)
+                  << " s is after the end of the run and was not applied\n";
+        }
+    }
+}
+
+void Console::printImpulse(const scenario::Runner& runner,
+                           const scenario::AppliedImpulse& event) const
+{
+    m_out << timePrefix(event.time) << event.label << " on " << runner.bodyName(event.bodyIndex)
+          << (event.solvedFromTarget ? " (solved for target)" : "") << '\n';
+    m_out << "  impulse = " << formatVec3(event.impulse) << " N s at offset "
+          << formatVec3(event.offset) << " m from the centre of mass\n";
+    m_out << "  velocity:         " << formatVec3(event.velocityBefore) << " -> "
+          << formatVec3(event.velocityAfter) << " m/s\n";
+    m_out << "  angular velocity: " << formatVec3(event.angularVelocityBefore) << " -> "
+          << formatVec3(event.angularVelocityAfter) << " rad/s\n";
+}
+
+void Console::printCollision(const scenario::Runner& runner, const CollisionEvent& event) const
+{
+    const ContactManifold& manifold = event.manifold;
+    const ContactFeature feature = manifold.feature();
+    m_out << timePrefix(event.time) << runner.bodyName(runner.bodyIndex(manifold.body))
+          << " hits the ground on " << (feature == ContactFeature::Edge ? "an " : "a ")
+          << featureName(feature) << " (" << manifold.pointCount
+          << (manifold.pointCount == 1 ? " vertex" : " vertices") << ")\n";
+    for (int i = 0; i < manifold.pointCount; ++i) {
+        const ContactPoint& point = manifold.points[static_cast<std::size_t>(i)];
+        m_out << "  vertex " << point.vertex << ": " << formatVec3(point.position) << '\n';
+    }
+    m_out << "  average: " << formatVec3(manifold.averagePoint())
+          << ", penetration = " << formatPrintf("%.3g", manifold.maxPenetration()) << " m\n";
+    m_out << "  approach speed = " << formatFixed(event.approachSpeed) << " m/s, "
+          << (event.restitutionApplied ? "restitution applied"
+                                       : "no restitution (slower than the threshold)")
+          << '\n';
+    m_out << "  normal impulse = " << formatVec3(event.normalImpulse)
+          << " N s, friction impulse = " << formatVec3(event.frictionImpulse) << " N s\n";
+    m_out << "  kinetic energy: " << formatFixed(event.kineticEnergyBefore) << " J -> "
+          << formatFixed(event.kineticEnergyAfter) << " J\n";
+}
+
+void Console::printRest(const scenario::Runner& runner, const RestEvent& event) const
+{
+    m_out << runner.bodyName(runner.bodyIndex(event.body)) << " came to rest at t = "
+          << formatFixed(event.time) << " s on face " << faceName(event.faceDown) << '\n';
+}
+
+void Console::printSummary(const scenario::Runner& runner) const
+{
+    const Vec3& gravity = runner.world().settings().gravity;
+    m_out << "final state at t = " << formatFixed(runner.time()) << " s (" << runner.stepCount()
+          << " steps):\n";
+    for (std::size_t i = 0; i < runner.bodies().size(); ++i) {
+        const Body& body = runner.world().body(runner.bodies()[i]);
+        const Real kinetic = body.kineticEnergy();
+        const Real potential = body.potentialEnergy(gravity);
+        m_out << "  " << runner.bodyName(i) << ": position = " << formatVec3(body.position)
+              << ", orientation = " << formatQuat(body.orientation) << '\n';
+        m_out << "    velocity = " << formatVec3(body.linearVelocity)
+              << ", angular velocity = " << formatVec3(body.angularVelocity) << '\n';
+        m_out << "    kinetic energy = " << formatFixed(kinetic)
+              << " J, potential energy = " << formatFixed(potential)
+              << " J, total = " << formatFixed(kinetic + potential) << " J"
+              << (body.asleep ? ", at rest" : "") << '\n';
+    }
+}
+
+void printError(const std::string& message)
+{
+    std::cout.flush();
+    std::cerr << "tumble: error: " << message << std::endl;
+}
+
+int runReportingErrors(const std::function<int()>& command)
+{
+    try {
+        return command();
+    } catch (const scenario::ScenarioError& error) {
+        printError(error.what());
+        return kExitBadInput;
+    } catch (const std::exception& error) {
+        printError(error.what());
+        return kExitFailure;
+    } catch (...) {
+        printError("unexpected failure");
+        return kExitFailure;
+    }
+}
+
+} // namespace tumble::cli

@@ -1,0 +1,32 @@
+// tumble: the command-line program. Declares the commands; each lives in its own file.
+#include "check_command.hpp"
+#include "console.hpp"
+#include "run_command.hpp"
+
+#include <CLI/CLI.hpp>
+
+int main(int argc, char** argv)
+{
+    CLI::App app{"tumble: rigid cuboids falling, bouncing and sliding on a ground plane", "tumble"};
+    app.require_subcommand(1);
+
+    tumble::cli::RunOptions runOptions;
+    tumble::cli::CheckOptions checkOptions;
+    const CLI::App* run = tumble::cli::addRunCommand(app, runOptions);
+    const CLI::App* check = tumble::cli::addCheckCommand(app, checkOptions);
+
+    // CLI11 prints its own usage errors; every one of them exits with the bad-input code
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& error) {
+        const int code = app.exit(error);
+        return code == 0 ? tumble::cli::kExitOk : tumble::cli::kExitBadInput;
+    }
+
+    return tumble::cli::runReportingErrors([&] {
+        if (*run) {
+            return tumble::cli::runCommand(runOptions);
+        }
+        return *check ? tumble::cli::checkCommand(checkOptions) : tumble::cli::kExitBadInput;
+    });
+}

@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Installs the Debian packages tumble needs to build and test, skipping those already installed.
+set -euo pipefail
+
+packages=(
+    cmake
+    ninja-build
+    g++
+    libglm-dev
+    libcli11-dev
+    libtomlplusplus-dev
+    libgtest-dev
+    libgmock-dev
+    pkg-config
+)
+
+missing=()
+for package in "${packages[@]}"; do
+    status=$(dpkg-query -W -f='${db:Status-Status}' "$package" 2>/dev/null || true)
+    if [[ "$status" != "installed" ]]; then
+        missing+=("$package")
+    fi
+done
+
+if [[ ${#missing[@]} -eq 0 ]]; then
+    echo "install-deps: all packages present"
+    exit 0
+fi
+
+echo "install-deps: installing ${missing[*]}"
+if [[ $(id -u) -eq 0 ]]; then
+    run_as_root=()
+elif command -v sudo >/dev/null 2>&1; then
+    run_as_root=(sudo)
+else
+    echo "install-deps: missing packages (${missing[*]}) and not root; install them or run as root" >&2
+    exit 1
+fi
+
+export DEBIAN_FRONTEND=noninteractive
+"${run_as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update
+"${run_as_root[@]}" env DEBIAN_FRONTEND=noninteractive \
+    apt-get install -y --no-install-recommends "${missing[@]}"

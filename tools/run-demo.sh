@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Builds the tumble program (Release) and runs the friction demo of handout part 3, task 4.
+# Extra arguments go to `tumble run`, e.g. --csv out.csv or --set rb.elasticity=0.7.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+bash tools/install-deps.sh
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
+cmake --build build --target tumble_cli
+exec build/apps/cli/tumble run scenarios/part3_task4_friction.toml "$@"
