@@ -50,17 +50,9 @@ inline Real maxDifference(const Mat3& a, const Mat3& b)
     return largest;
 }
 
-inline ::testing::AssertionResult near(const Vec3& actual, const Vec3& expected, Real tolerance)
-{
-    if (maxDifference(actual, expected) <= tolerance) {
-        return ::testing::AssertionSuccess();
-    }
-    return ::testing::AssertionFailure()
-           << "actual " << ::testing::PrintToString(actual) << " expected "
-           << ::testing::PrintToString(expected) << " tolerance " << tolerance;
-}
-
-inline ::testing::AssertionResult near(const Mat3& actual, const Mat3& expected, Real tolerance)
+/// Every component of `actual` within `tolerance` of `expected` (Vec3 or Mat3).
+template <typename Value>
+::testing::AssertionResult near(const Value& actual, const Value& expected, Real tolerance)
 {
     if (maxDifference(actual, expected) <= tolerance) {
         return ::testing::AssertionSuccess();
