@@ -16,6 +16,26 @@ const char* featureName(ContactFeature feature)
     return "?";
 }
 
+const char* restitutionStateName(RestitutionState state)
+{
+    switch (state) {
+    case RestitutionState::None: return "none";
+    case RestitutionState::Applied: return "applied";
+    case RestitutionState::Suppressed: return "suppressed";
+    }
+    return "?";
+}
+
+const char* contactPhaseName(ContactPhase phase)
+{
+    switch (phase) {
+    case ContactPhase::Impact: return "impact";
+    case ContactPhase::Resting: return "resting";
+    case ContactPhase::Average: return "average";
+    }
+    return "?";
+}
+
 ContactFeature ContactManifold::feature() const
 {
     // The lowest vertices of a cuboid near a plane are 1 (a vertex), 2 (an edge) or 4 (a face);

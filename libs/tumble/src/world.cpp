@@ -89,10 +89,13 @@ World::World(const WorldSettings& settings) : m_settings(settings) {}
 
 void World::setGravity(const Vec3& gravity)
 {
-    m_settings.gravity = gravity;
     for (Slot& slot : m_slots) {
+        // The potential energy is measured in the gravity field: a new field changes it.
+        slot.body.ledger.added += slot.body.potentialEnergy(gravity) -
+                                  slot.body.potentialEnergy(m_settings.gravity);
         wake(slot.body);
     }
+    m_settings.gravity = gravity;
 }
 
 void World::setGround(const std::optional<Plane>& ground)
@@ -116,6 +119,7 @@ BodyId World::createBody(const BodyDef& def)
     }
     Slot& slot = m_slots[index];
     slot.body = makeBody(def);
+    slot.body.ledger.initial = energyOf(slot.body);
     slot.alive = true;
     slot.touchingGround = false;
     return BodyId{index, slot.generation};
@@ -165,59 +169,63 @@ void World::wake(Body& body)
     body.slowTime = 0.0;
 }
 
+template <typename Change>
+void World::editBody(BodyId id, Change change)
+{
+    Body& body = mutableBody(id);
+    const Real energyBefore = energyOf(body);
+    change(body);
+    body.ledger.added += energyOf(body) - energyBefore;
+    wake(body);
+}
+
 void World::setMass(BodyId id, Real mass)
 {
     TUMBLE_ASSERT(std::isfinite(mass) && mass > 0.0);
-    Body& body = mutableBody(id);
-    body.mass = mass;
-    refreshMassProperties(body);
-    wake(body);
+    editBody(id, [&](Body& body) {
+        body.mass = mass;
+        refreshMassProperties(body);
+    });
 }
 
 void World::setSize(BodyId id, const Vec3& size)
 {
     TUMBLE_ASSERT(isFinite(size) && size.x > 0.0 && size.y > 0.0 && size.z > 0.0);
-    Body& body = mutableBody(id);
-    body.shape.size = size;
-    refreshMassProperties(body);
-    wake(body);
+    editBody(id, [&](Body& body) {
+        body.shape.size = size;
+        refreshMassProperties(body);
+    });
 }
 
 void World::setTransform(BodyId id, const Vec3& position, const Quat& orientation)
 {
-    Body& body = mutableBody(id);
-    body.position = position;
-    body.orientation = glm::normalize(orientation);
-    refreshWorldInertia(body);
-    wake(body);
+    editBody(id, [&](Body& body) {
+        body.position = position;
+        body.orientation = glm::normalize(orientation);
+        refreshWorldInertia(body);
+    });
 }
 
 void World::setLinearVelocity(BodyId id, const Vec3& velocity)
 {
-    Body& body = mutableBody(id);
-    body.linearVelocity = velocity;
-    wake(body);
+    editBody(id, [&](Body& body) { body.linearVelocity = velocity; });
 }
 
 void World::setAngularVelocity(BodyId id, const Vec3& angularVelocity)
 {
-    Body& body = mutableBody(id);
-    body.angularVelocity = angularVelocity;
-    wake(body);
+    editBody(id, [&](Body& body) { body.angularVelocity = angularVelocity; });
 }
 
 void World::setMaterial(BodyId id, const Material& material)
 {
-    Body& body = mutableBody(id);
-    body.material = material;
-    wake(body);
+    editBody(id, [&](Body& body) { body.material = material; });
 }
 
 void World::applyImpulse(BodyId id, const Vec3& impulse, const Vec3& worldPoint)
 {
-    Body& body = mutableBody(id);
-    applyImpulseAtOffset(body, impulse, worldPoint - body.position);
-    wake(body);
+    editBody(id, [&](Body& body) {
+        applyImpulseAtOffset(body, impulse, worldPoint - body.position);
+    });
 }
 
 ContactManifold World::contactsOf(BodyId id) const
@@ -237,11 +245,13 @@ void World::step(Real dt)
     TUMBLE_ASSERT(std::isfinite(dt) && dt > 0.0);
     m_collisions.clear();
     m_restEvents.clear();
+    m_contactRecords.clear();
     for (std::uint32_t index = 0; index < m_slots.size(); ++index) {
         Slot& slot = m_slots[index];
         if (!slot.alive || slot.body.asleep) {
             continue;
         }
+        slot.body.ledger.contactWorkLastStep = 0.0;
         const BodyId id{index, slot.generation};
         if (m_settings.response == ContactResponse::Average) {
             advanceAverage(id, slot, dt);
@@ -268,18 +278,24 @@ void World::advanceSequential(BodyId id, Slot& slot, Real dt)
         //    time of impact, so the impact happens at the plane.
         if (approachSpeed(body, contacts) > kImpactSpeed) {
             if (lowestApproachingHeight(body, contacts) <= impactTolerance()) {
-                recordImpact(contacts, resolveImpact(body, contacts, solveSettings),
-                             m_time + elapsed);
+                const Real energyBefore = energyOf(body);
+                const ImpactOutcome outcome = resolveImpact(body, contacts, solveSettings);
+                bookContact(body, outcome.work, energyOf(body) - energyBefore);
+                recordImpact(contacts, outcome, m_time + elapsed);
+                recordContacts(ContactPhase::Impact, contacts, m_time + elapsed);
+                const Real energyBeforeSettling = energyOf(body);
                 settleOnPlane(body, contacts);
+                bookCorrection(body, energyBeforeSettling);
             } else {
                 dropApproachingPoints(body, contacts);
             }
         }
         // 3. Integrate velocities over the sub-step: gravity, then resting contact.
+        const Real energyStart = energyOf(body);
         const Vec3 velocityStart = body.linearVelocity;
         const Vec3 angularVelocityStart = body.angularVelocity;
         Real tau = remaining;
-        integrateVelocities(body, contacts, tau);
+        ContactWork restingWork = integrateVelocities(body, contacts, tau);
         // 4. Shorten the sub-step to the first impact of another vertex.
         if (m_ground && substep < kMaxSubsteps) {
             const Real impact = timeOfImpact(substepMotion(body, velocityStart, tau),
@@ -289,13 +305,17 @@ void World::advanceSequential(BodyId id, Slot& slot, Real dt)
                 body.linearVelocity = velocityStart;
                 body.angularVelocity = angularVelocityStart;
                 tau = impact;
-                integrateVelocities(body, contacts, tau);
+                restingWork = integrateVelocities(body, contacts, tau);
             }
         }
+        recordContacts(ContactPhase::Resting, contacts, m_time + elapsed);
         // 5. Integrate positions and orientation.
         integratePositions(body, velocityStart, tau);
+        bookContact(body, restingWork, energyOf(body) - energyStart);
         // 6. Push the body out of any penetration left by the sub-step.
+        const Real energyBeforeCorrection = energyOf(body);
         correctPenetration(body);
+        bookCorrection(body, energyBeforeCorrection);
         if (tau == remaining) {
             break;
         }
@@ -308,9 +328,11 @@ void World::advanceAverage(BodyId id, Slot& slot, Real dt)
 {
     Body& body = slot.body;
     // The handouts' order: move freely for the whole step, then detect and respond.
+    const Real energyStart = energyOf(body);
     const Vec3 velocityStart = body.linearVelocity;
     body.linearVelocity += m_settings.gravity * dt;
     integratePositions(body, velocityStart, dt);
+    bookContact(body, ContactWork{}, energyOf(body) - energyStart);
     ContactManifold contacts = contactsOf(id);
     const bool wasTouching = slot.touchingGround;
     slot.touchingGround = contacts.pointCount > 0;
@@ -319,13 +341,18 @@ void World::advanceAverage(BodyId id, Slot& slot, Real dt)
     }
     // Move the body up so its lowest vertex lies on the plane (handout part 2, task 3).
     const Real lift = contacts.maxPenetration();
+    const Real energyBeforeLift = energyOf(body);
     body.position += lift * contacts.normal;
+    bookCorrection(body, energyBeforeLift);
     for (int i = 0; i < contacts.pointCount; ++i) {
         contacts.points[i].position += lift * contacts.normal;
     }
     const ContactSolveSettings solveSettings{m_settings.restitutionThreshold,
                                              m_settings.solverIterations};
+    const Real energyBeforeImpulse = energyOf(body);
     const ImpactOutcome outcome = resolveAverageContact(body, contacts, solveSettings);
+    bookContact(body, outcome.work, energyOf(body) - energyBeforeImpulse);
+    recordContacts(ContactPhase::Average, contacts, m_time + dt);
     // A resting body gains |g| dt of approach every step; only a real impact is reported.
     const Real restingApproach = glm::length(m_settings.gravity) * dt;
     if (outcome.approachSpeed > 0.0 &&
@@ -340,10 +367,33 @@ Real World::impactTolerance() const
     return kImpactTolerance * m_settings.contactTolerance;
 }
 
-void World::integrateVelocities(Body& body, ContactManifold& contacts, Real tau) const
+ContactWork World::integrateVelocities(Body& body, ContactManifold& contacts, Real tau) const
 {
-    solveRestingContact(body, contacts, m_settings.gravity * tau, tau,
-                        {m_settings.restitutionThreshold, m_settings.solverIterations});
+    return solveRestingContact(body, contacts, m_settings.gravity * tau, tau,
+                               {m_settings.restitutionThreshold, m_settings.solverIterations});
+}
+
+void World::bookContact(Body& body, const ContactWork& work, Real energyChange) const
+{
+    // (8.3): the contact impulses' work is booked to them; whatever else changed the energy in
+    // the same stage (gravity over a sub-step, the rotation split, rounding) is the integrator's.
+    const Real contactWork = work.normal + work.friction;
+    body.ledger.removedByNormal -= work.normal;
+    body.ledger.removedByFriction -= work.friction;
+    body.ledger.removedByIntegration -= energyChange - contactWork;
+    body.ledger.contactWorkLastStep += contactWork;
+}
+
+void World::bookCorrection(Body& body, Real energyBefore) const
+{
+    body.ledger.removedByCorrection += energyBefore - energyOf(body);
+}
+
+void World::recordContacts(ContactPhase phase, const ContactManifold& contacts, Real time)
+{
+    if (m_settings.recordContacts && contacts.pointCount > 0) {
+        m_contactRecords.push_back(ContactRecord{time, phase, contacts});
+    }
 }
 
 SubstepMotion World::substepMotion(const Body& body, const Vec3& velocityStart, Real tau) const
@@ -418,6 +468,7 @@ void World::updateRest(BodyId id, Slot& slot, Real dt)
     m_restEvents.push_back(
         RestEvent{id, slot.slowSince, faceAlong(body.orientation, -Plane::normal())});
     if (m_settings.allowSleep) {
+        body.ledger.removedByRest += body.kineticEnergy();
         body.asleep = true;
         body.linearVelocity = Vec3(0.0);
         body.angularVelocity = Vec3(0.0);

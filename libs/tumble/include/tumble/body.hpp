@@ -1,6 +1,7 @@
 // BodyDef (what a user asks for) and Body (the read-only state a World keeps for each body).
 #pragma once
 
+#include "tumble/energy_ledger.hpp"
 #include "tumble/material.hpp"
 #include "tumble/math.hpp"
 #include "tumble/shape.hpp"
@@ -45,6 +46,8 @@ struct Body {
     bool asleep = false;
     /// How long the body has been slow in contact with the ground, s.
     Real slowTime = 0.0;
+    /// Where the body's energy went since its creation.
+    EnergyLedger ledger{};
 
     [[nodiscard]] Mat3 rotation() const { return glm::mat3_cast(orientation); }
     /// Body-frame inertia diagonal I0, kg m^2.

@@ -16,6 +16,19 @@ enum class ContactFeature : std::uint8_t { None = 0, Vertex = 1, Edge = 2, Face 
 /// "none", "vertex", "edge" or "face".
 const char* featureName(ContactFeature feature);
 
+/// What restitution did at a contact point.
+enum class RestitutionState : std::uint8_t {
+    /// The point was not approaching, or was in resting contact (restitution 0 by design).
+    None,
+    /// The point approached faster than the threshold: Newton's target -e vn was used.
+    Applied,
+    /// The point approached, but slower than the threshold: a plastic impact.
+    Suppressed,
+};
+
+/// "none", "applied" or "suppressed".
+const char* restitutionStateName(RestitutionState state);
+
 /// One cuboid vertex touching or below the ground.
 struct ContactPoint {
     /// Index of the vertex (see cuboidVertices).
@@ -28,6 +41,13 @@ struct ContactPoint {
     Real normalImpulse = 0.0;
     /// Tangential (friction) impulse applied at this point in the reported event, N s.
     Vec3 frictionImpulse{0.0};
+    /// Velocity of the body's material point at the vertex before and after the solve, m/s.
+    Vec3 velocityBefore{0.0};
+    Vec3 velocityAfter{0.0};
+    /// True when the friction impulse is on the edge of the Coulomb cone and the point still
+    /// slides after the solve; false when it sticks (or carries no load).
+    bool sliding = false;
+    RestitutionState restitution = RestitutionState::None;
 };
 
 /// The vertices of one cuboid that touch the ground (within a tolerance).
@@ -44,6 +64,21 @@ struct ContactManifold {
     [[nodiscard]] Vec3 averagePoint() const;
     /// Largest penetration of any touching vertex, m (0 when there are none).
     [[nodiscard]] Real maxPenetration() const;
+};
+
+/// Which stage of the step solved a contact (docs/physics/README.md, the step).
+enum class ContactPhase : std::uint8_t { Impact, Resting, Average };
+
+/// "impact", "resting" or "average".
+const char* contactPhaseName(ContactPhase phase);
+
+/// One contact solve of one body, for the contact ledger (WorldSettings::recordContacts).
+struct ContactRecord {
+    /// Simulated time of the solve (the start of its sub-step), s.
+    Real time = 0.0;
+    ContactPhase phase = ContactPhase::Resting;
+    /// The points with their impulses and their velocities before and after.
+    ContactManifold manifold{};
 };
 
 /// An impact of a body on the ground: the contact and the impulses that resolved it.

@@ -4,6 +4,7 @@
 #include "tumble/body.hpp"
 #include "tumble/body_id.hpp"
 #include "tumble/contact.hpp"
+#include "tumble/energy_ledger.hpp"
 #include "tumble/impulse_target.hpp"
 #include "tumble/material.hpp"
 #include "tumble/math.hpp"

@@ -16,6 +16,7 @@ namespace tumble {
 
 struct SubstepMotion;
 struct ImpactOutcome;
+struct ContactWork;
 
 /// How orientation and angular velocity advance in free flight.
 enum class Integrator : std::uint8_t {
@@ -62,6 +63,9 @@ struct WorldSettings {
     /// Whether a body at rest is put to sleep (velocities zeroed, not integrated until woken by
     /// an impulse or a change). Default true.
     bool allowSleep = true;
+    /// Whether step() keeps a ContactRecord of every contact solve (the contact ledger).
+    /// Default false.
+    bool recordContacts = false;
 };
 
 /// A body that has just come to rest.
@@ -117,6 +121,13 @@ public:
     [[nodiscard]] std::span<const CollisionEvent> collisions() const { return m_collisions; }
     /// Bodies that came to rest during the last step.
     [[nodiscard]] std::span<const RestEvent> restEvents() const { return m_restEvents; }
+    /// Every contact solve of the last step, when WorldSettings::recordContacts is set.
+    [[nodiscard]] std::span<const ContactRecord> contactRecords() const { return m_contactRecords; }
+    /// Kinetic plus potential energy of a body, J.
+    [[nodiscard]] Real energyOf(const Body& body) const
+    {
+        return body.kineticEnergy() + body.potentialEnergy(m_settings.gravity);
+    }
     /// Touching vertices of a body at its current pose (empty manifold without a ground).
     [[nodiscard]] ContactManifold contactsOf(BodyId id) const;
 
@@ -136,11 +147,18 @@ private:
     void advanceSequential(BodyId id, Slot& slot, Real dt);
     void advanceAverage(BodyId id, Slot& slot, Real dt);
     [[nodiscard]] Real impactTolerance() const;
-    void integrateVelocities(Body& body, ContactManifold& contacts, Real tau) const;
+    [[nodiscard]] ContactWork integrateVelocities(Body& body, ContactManifold& contacts,
+                                                  Real tau) const;
+    void bookContact(Body& body, const ContactWork& work, Real energyChange) const;
+    void bookCorrection(Body& body, Real energyBefore) const;
+    void recordContacts(ContactPhase phase, const ContactManifold& contacts, Real time);
     [[nodiscard]] SubstepMotion substepMotion(const Body& body, const Vec3& velocityStart,
                                               Real tau) const;
     void integratePositions(Body& body, const Vec3& velocityStart, Real tau) const;
     void correctPenetration(Body& body) const;
+    /// Runs `change` on a body and books the energy it adds as added by the user.
+    template <typename Change>
+    void editBody(BodyId id, Change change);
     void recordImpact(const ContactManifold& contacts, const ImpactOutcome& outcome, Real time);
     void updateRest(BodyId id, Slot& slot, Real dt);
 
@@ -151,6 +169,7 @@ private:
     Real m_time = 0.0;
     std::vector<CollisionEvent> m_collisions;
     std::vector<RestEvent> m_restEvents;
+    std::vector<ContactRecord> m_contactRecords;
 };
 
 } // namespace tumble

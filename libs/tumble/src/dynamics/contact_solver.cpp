@@ -28,6 +28,9 @@ struct SolverPoint {
     /// Target normal velocity: -e vn^- for an impact faster than the threshold, else 0 (5.3).
     Real targetNormalVelocity = 0.0;
     Real friction = 0.0;
+    /// Velocity of the material point at the vertex when the solve was prepared.
+    Vec3 velocityBefore{0.0};
+    RestitutionState restitution = RestitutionState::None;
     Real normalImpulse = 0.0;
     Real tangentImpulse1 = 0.0;
     Real tangentImpulse2 = 0.0;
@@ -68,9 +71,13 @@ SolverPoint preparePoint(const Body& body, const SolverFrame& frame, const Vec3&
                          k11 * invDeterminant};
 
     const Vec3 velocity = body.linearVelocity + glm::cross(body.angularVelocity, r);
+    point.velocityBefore = velocity;
     const Real normalVelocity = glm::dot(frame.n, velocity);
     if (normalVelocity < -restitutionThreshold) {
         point.targetNormalVelocity = -restitution * normalVelocity;
+        point.restitution = RestitutionState::Applied;
+    } else if (normalVelocity < 0.0 && restitution > 0.0) {
+        point.restitution = RestitutionState::Suppressed;
     }
     const Vec3 sliding = velocity - normalVelocity * frame.n;
     point.friction = glm::length(sliding) < kStickingSpeed
@@ -188,17 +195,32 @@ PreparedSolve prepare(const Body& body, const ContactManifold& manifold, Real re
 }
 
 /// Copies the accumulated impulses into the manifold and sums them into the outcome.
-void publish(const PreparedSolve& solve, ContactManifold& manifold, ImpactOutcome& outcome)
+void publish(const PreparedSolve& solve, const Body& body, ContactManifold& manifold,
+             ImpactOutcome& outcome)
 {
     outcome.normalImpulse = Vec3(0.0);
     outcome.frictionImpulse = Vec3(0.0);
+    outcome.work = ContactWork{};
     for (int i = 0; i < solve.count; ++i) {
         const SolverPoint& point = solve.points[i];
-        manifold.points[i].normalImpulse = point.normalImpulse;
-        manifold.points[i].frictionImpulse =
+        ContactPoint& published = manifold.points[i];
+        published.normalImpulse = point.normalImpulse;
+        published.frictionImpulse =
             point.tangentImpulse1 * solve.frame.t1 + point.tangentImpulse2 * solve.frame.t2;
+        published.velocityBefore = point.velocityBefore;
+        published.velocityAfter = body.velocityAt(published.position);
+        published.restitution = point.restitution;
+        const Vec3 slidingAfter =
+            published.velocityAfter - glm::dot(solve.frame.n, published.velocityAfter) * solve.frame.n;
+        published.sliding = point.normalImpulse > 0.0 && glm::length(slidingAfter) > kStickingSpeed;
         outcome.normalImpulse += point.normalImpulse * solve.frame.n;
-        outcome.frictionImpulse += manifold.points[i].frictionImpulse;
+        outcome.frictionImpulse += published.frictionImpulse;
+        // (8.2): with the final impulses and the point's velocity before and after, the sum over
+        // the points is exactly the kinetic energy the solve changed, whatever path Gauss-Seidel
+        // took; before is taken ahead of gravity's impulse, so a resting body does no work.
+        const Vec3 meanVelocity = 0.5 * (published.velocityBefore + published.velocityAfter);
+        outcome.work.normal += point.normalImpulse * glm::dot(solve.frame.n, meanVelocity);
+        outcome.work.friction += glm::dot(published.frictionImpulse, meanVelocity);
     }
 }
 
@@ -253,32 +275,35 @@ ImpactOutcome resolveImpact(Body& body, ContactManifold& manifold,
         solvePoints(body, solve.frame, std::span(solve.points.data(), solve.count), keep,
                     settings.iterations);
     }
-    publish(solve, manifold, outcome);
+    publish(solve, body, manifold, outcome);
     outcome.kineticEnergyAfter = body.kineticEnergy();
     return outcome;
 }
 
-void solveRestingContact(Body& body, ContactManifold& manifold, const Vec3& gravityImpulsePerMass,
-                         Real tau, const ContactSolveSettings& settings)
+ContactWork solveRestingContact(Body& body, ContactManifold& manifold,
+                                const Vec3& gravityImpulsePerMass, Real tau,
+                                const ContactSolveSettings& settings)
 {
     // Prepared before gravity acts, so a body at rest on a slope sees no sliding and keeps the
     // static coefficient.
     PreparedSolve solve = prepare(body, manifold, 0.0, settings.restitutionThreshold);
     body.linearVelocity += gravityImpulsePerMass;
     if (solve.count == 0) {
-        return;
+        return ContactWork{};
     }
     for (int i = 0; i < solve.count; ++i) {
         // (5.9): the target -h / tau lets a vertex at height h reach the plane, no further.
         solve.points[i].targetNormalVelocity = -std::max(0.0, -manifold.points[i].penetration) / tau;
+        solve.points[i].restitution = RestitutionState::None;
     }
     solvePoints(body, solve.frame, std::span(solve.points.data(), solve.count), 1.0,
                 settings.iterations);
-    ImpactOutcome unused;
-    publish(solve, manifold, unused);
+    ImpactOutcome outcome;
+    publish(solve, body, manifold, outcome);
+    return outcome.work;
 }
 
-ImpactOutcome resolveAverageContact(Body& body, const ContactManifold& manifold,
+ImpactOutcome resolveAverageContact(Body& body, ContactManifold& manifold,
                                     const ContactSolveSettings& settings)
 {
     ImpactOutcome outcome;
@@ -286,6 +311,10 @@ ImpactOutcome resolveAverageContact(Body& body, const ContactManifold& manifold,
     outcome.kineticEnergyAfter = outcome.kineticEnergyBefore;
     if (manifold.pointCount == 0) {
         return outcome;
+    }
+    for (int i = 0; i < manifold.pointCount; ++i) {
+        manifold.points[i].velocityBefore = body.velocityAt(manifold.points[i].position);
+        manifold.points[i].velocityAfter = manifold.points[i].velocityBefore;
     }
     const Vec3& n = manifold.normal;
     const Vec3 r = manifold.averagePoint() - body.position;
@@ -306,20 +335,36 @@ ImpactOutcome resolveAverageContact(Body& body, const ContactManifold& manifold,
     const Vec3 sliding = velocity - normalVelocity * n;
     const Real slidingSpeed = glm::length(sliding);
     Vec3 frictionImpulse(0.0);
+    Real friction = body.material.friction;
     if (slidingSpeed > 0.0) {
         const Vec3 t = sliding / slidingSpeed;
         const Vec3 rt = glm::cross(r, t);
         const Real stoppingImpulse =
             slidingSpeed / (body.invMass + glm::dot(rt, body.invInertiaWorld * rt));
-        const Real friction = slidingSpeed < kStickingSpeed
-                                  ? body.material.staticFrictionOrKinetic()
-                                  : body.material.friction;
+        friction = slidingSpeed < kStickingSpeed ? body.material.staticFrictionOrKinetic()
+                                                 : body.material.friction;
         frictionImpulse = -std::min(friction * normalImpulse, stoppingImpulse) * t;
     }
     outcome.normalImpulse = normalImpulse * n;
     outcome.frictionImpulse = frictionImpulse;
     applyImpulseAtOffset(body, outcome.normalImpulse + frictionImpulse, r);
+    // (8.2) for the one impulse, split into its normal and tangential parts.
+    const Vec3 meanVelocity = 0.5 * (velocity + body.velocityAt(manifold.averagePoint()));
+    outcome.work.normal = glm::dot(outcome.normalImpulse, meanVelocity);
+    outcome.work.friction = glm::dot(frictionImpulse, meanVelocity);
     outcome.kineticEnergyAfter = body.kineticEnergy();
+    // The points share the one impulse equally, for the contact ledger.
+    const Real share = 1.0 / static_cast<Real>(manifold.pointCount);
+    for (int i = 0; i < manifold.pointCount; ++i) {
+        ContactPoint& point = manifold.points[i];
+        point.normalImpulse = share * normalImpulse;
+        point.frictionImpulse = share * frictionImpulse;
+        point.velocityAfter = body.velocityAt(point.position);
+        point.restitution = outcome.restitutionApplied ? RestitutionState::Applied
+                                                       : RestitutionState::Suppressed;
+        point.sliding = glm::length(frictionImpulse) >= friction * normalImpulse * (1.0 - 1e-12) &&
+                        friction * normalImpulse > 0.0;
+    }
     return outcome;
 }
 

@@ -14,6 +14,14 @@ struct ContactSolveSettings {
     int iterations = 64;
 };
 
+/// Work done on the body by contact impulses, J: the sum over the points of P . (u_before +
+/// u_after) / 2 with P a point's total impulse and u its velocity (08-energy-ledger.md, (8.2)).
+/// Negative: energy removed.
+struct ContactWork {
+    Real normal = 0.0;
+    Real friction = 0.0;
+};
+
 /// What an impact did to the body.
 struct ImpactOutcome {
     /// Fastest approach of a touching vertex before the impact (a positive speed), m/s.
@@ -24,6 +32,7 @@ struct ImpactOutcome {
     /// Sums of the normal and the friction impulses, world frame, N s.
     Vec3 normalImpulse{0.0};
     Vec3 frictionImpulse{0.0};
+    ContactWork work{};
 };
 
 /// Fastest approach speed of the manifold's vertices towards the plane (0 when all separate).
@@ -39,13 +48,14 @@ ImpactOutcome resolveImpact(Body& body, ContactManifold& manifold,
 /// resting contact with no restitution (5.5): a vertex on the plane may not approach it, and one
 /// still h above it may approach at most at h / tau, so it comes down onto the plane instead of
 /// hovering (5.9). Static or kinetic friction is chosen from the sliding before gravity acts.
-void solveRestingContact(Body& body, ContactManifold& manifold, const Vec3& gravityImpulsePerMass,
-                         Real tau, const ContactSolveSettings& settings);
+ContactWork solveRestingContact(Body& body, ContactManifold& manifold,
+                                const Vec3& gravityImpulsePerMass, Real tau,
+                                const ContactSolveSettings& settings);
 
 /// The handouts' response (5.7): one impulse at the average touching vertex with restitution,
 /// and a Coulomb friction impulse opposing the sliding there; approachSpeed is measured at the
 /// average point. Nothing happens when that point separates.
-ImpactOutcome resolveAverageContact(Body& body, const ContactManifold& manifold,
+ImpactOutcome resolveAverageContact(Body& body, ContactManifold& manifold,
                                     const ContactSolveSettings& settings);
 
 } // namespace tumble

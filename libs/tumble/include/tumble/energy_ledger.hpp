@@ -1,0 +1,37 @@
+// EnergyLedger: where a body's mechanical energy went since it was created
+// (docs/physics/08-energy-ledger.md).
+#pragma once
+
+#include "tumble/math.hpp"
+
+namespace tumble {
+
+/// Running totals, J. At any time kinetic + potential + removed() - added = initial, to rounding:
+/// every change of the body's energy is booked under exactly one heading.
+struct EnergyLedger {
+    /// Kinetic plus potential energy when the body was created.
+    Real initial = 0.0;
+    /// Minus the work of the normal contact impulses (restitution below 1, resting contact).
+    Real removedByNormal = 0.0;
+    /// Minus the work of the friction impulses.
+    Real removedByFriction = 0.0;
+    /// Potential energy taken away by moving the body out of (or onto) the ground.
+    Real removedByCorrection = 0.0;
+    /// Energy lost (positive) or gained (negative) by the time integration itself.
+    Real removedByIntegration = 0.0;
+    /// Kinetic energy set to zero when the body was put to sleep at rest.
+    Real removedByRest = 0.0;
+    /// Energy added by applyImpulse and by the setters (velocity, pose, mass, size, gravity).
+    Real added = 0.0;
+    /// Work of all contact impulses during the last step; positive means the solver added
+    /// energy, which it should never do.
+    Real contactWorkLastStep = 0.0;
+
+    [[nodiscard]] Real removed() const
+    {
+        return removedByNormal + removedByFriction + removedByCorrection + removedByIntegration +
+               removedByRest;
+    }
+};
+
+} // namespace tumble
