@@ -12,6 +12,8 @@ packages=(
     libgtest-dev
     libgmock-dev
     pkg-config
+    # tumble plot and tumble validate --plot draw their PNG files with gnuplot
+    gnuplot-nox
 )
 
 missing=()

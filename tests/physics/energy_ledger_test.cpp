@@ -32,7 +32,7 @@ TEST(EnergyLedger, BalancesAtEveryStepOfATumblingThrowAndTheSolverNeverAddsEnerg
     const Real scale = std::abs(world.energyOf(world.body(id)));
     testing::simulate(world, 10.0, 1.0 / 240.0, [&](const World& w) {
         ASSERT_LT(imbalance(w, id, scale), 1e-9) << "t = " << w.time();
-        ASSERT_LE(w.body(id).ledger.contactWorkLastStep, 1e-12 * scale) << "t = " << w.time();
+        ASSERT_LE(w.body(id).ledger.impactWorkLastStep, 1e-12 * scale) << "t = " << w.time();
     });
     const EnergyLedger& ledger = world.body(id).ledger;
     // It came to rest: the kinetic energy at the start went to restitution, friction and rest.

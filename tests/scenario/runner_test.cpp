@@ -36,7 +36,7 @@ Real totalEnergy(const Runner& runner)
     return energy;
 }
 
-TEST(Runner, EveryScenarioFileRunsToItsEndWithFiniteStateAndNoEnergyGainOutsideImpulses)
+TEST(Runner, EveryScenarioFileRunsToItsEndFiniteWithBalancedBooksAndNoEnergyGain)
 {
     int files = 0;
     for (const auto& entry : std::filesystem::directory_iterator(TUMBLE_SCENARIO_DIR)) {
@@ -63,7 +63,15 @@ TEST(Runner, EveryScenarioFileRunsToItsEndWithFiniteStateAndNoEnergyGainOutsideI
             }
             energyBefore = energy;
             for (const BodyId id : runner.bodies()) {
-                ASSERT_TRUE(finite(runner.world().body(id))) << "at step " << i;
+                const Body& body = runner.world().body(id);
+                ASSERT_TRUE(finite(body)) << "at step " << i;
+                // The energy ledger balances (docs/physics/08-energy-ledger.md, (8.1)).
+                const EnergyLedger& ledger = body.ledger;
+                const Real imbalance = runner.world().energyOf(body) + ledger.removed() -
+                                       ledger.added - ledger.initial;
+                ASSERT_LT(std::abs(imbalance),
+                          1e-9 * (std::abs(ledger.initial) + std::abs(ledger.added) + 1.0))
+                    << "at step " << i;
             }
         }
         EXPECT_EQ(runner.stepCount(), steps);

@@ -137,7 +137,8 @@ TEST(ContactSolver, RestingContactCancelsTheStepsGravityExactly)
     const Real dt = 1.0 / 240.0;
     Body body = makeBody(BodyDef{.mass = 3.0, .position = Vec3(0, 1, 0)});
     ContactManifold contacts = touching(body);
-    solveRestingContact(body, contacts, Vec3(0, -9.81 * dt, 0), dt, ContactSolveSettings{});
+    solveRestingContact(body, contacts, Vec3(0, -9.81 * dt, 0), dt, ContactSolveSettings{},
+                        WarmStartCache{});
     Real total = 0.0;
     for (int i = 0; i < contacts.pointCount; ++i) {
         total += contacts.points[i].normalImpulse;

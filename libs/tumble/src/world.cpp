@@ -25,6 +25,9 @@ constexpr Real kImpactTolerance = 1e-4;
 /// Impacts within one step beyond this many are left to the resting-contact solve and the
 /// penetration correction, so a pathological case cannot stall a step.
 constexpr int kMaxSubsteps = 32;
+/// Time-of-impact searches in one sub-step: each searches the motion re-solved for the shorter
+/// sub-step the previous one found (the fixed point is usually reached in a few).
+constexpr int kMaxImpactSearches = 64;
 
 [[maybe_unused]] bool isValidDef(const BodyDef& def)
 {
@@ -122,6 +125,7 @@ BodyId World::createBody(const BodyDef& def)
     slot.body.ledger.initial = energyOf(slot.body);
     slot.alive = true;
     slot.touchingGround = false;
+    slot.warmStart = WarmStartCache{};
     return BodyId{index, slot.generation};
 }
 
@@ -251,7 +255,7 @@ void World::step(Real dt)
         if (!slot.alive || slot.body.asleep) {
             continue;
         }
-        slot.body.ledger.contactWorkLastStep = 0.0;
+        slot.body.ledger.impactWorkLastStep = 0.0;
         const BodyId id{index, slot.generation};
         if (m_settings.response == ContactResponse::Average) {
             advanceAverage(id, slot, dt);
@@ -280,7 +284,7 @@ void World::advanceSequential(BodyId id, Slot& slot, Real dt)
             if (lowestApproachingHeight(body, contacts) <= impactTolerance()) {
                 const Real energyBefore = energyOf(body);
                 const ImpactOutcome outcome = resolveImpact(body, contacts, solveSettings);
-                bookContact(body, outcome.work, energyOf(body) - energyBefore);
+                bookContact(body, outcome.work, energyOf(body) - energyBefore, true);
                 recordImpact(contacts, outcome, m_time + elapsed);
                 recordContacts(ContactPhase::Impact, contacts, m_time + elapsed);
                 const Real energyBeforeSettling = energyOf(body);
@@ -295,25 +299,32 @@ void World::advanceSequential(BodyId id, Slot& slot, Real dt)
         const Vec3 velocityStart = body.linearVelocity;
         const Vec3 angularVelocityStart = body.angularVelocity;
         Real tau = remaining;
-        ContactWork restingWork = integrateVelocities(body, contacts, tau);
+        ContactWork restingWork = integrateVelocities(body, contacts, tau, slot.warmStart);
         // 4. Shorten the sub-step to the first impact of another vertex.
-        if (m_ground && substep < kMaxSubsteps) {
+        //    The resting-contact solve depends on tau, so the motion over a shortened sub-step
+        //    is not the one searched: search again until no vertex crosses within it.
+        for (int search = 0; m_ground && substep < kMaxSubsteps && search < kMaxImpactSearches;
+             ++search) {
             const Real impact = timeOfImpact(substepMotion(body, velocityStart, tau),
                                              body.shape.halfExtents(), *m_ground,
                                              vertexMask(contacts), impactTolerance());
-            if (impact < tau) {
-                body.linearVelocity = velocityStart;
-                body.angularVelocity = angularVelocityStart;
-                tau = impact;
-                restingWork = integrateVelocities(body, contacts, tau);
+            if (impact >= tau) {
+                break;
             }
+            body.linearVelocity = velocityStart;
+            body.angularVelocity = angularVelocityStart;
+            tau = impact;
+            restingWork = integrateVelocities(body, contacts, tau, slot.warmStart);
         }
+        slot.warmStart = makeWarmStart(contacts, tau);
         recordContacts(ContactPhase::Resting, contacts, m_time + elapsed);
         // 5. Integrate positions and orientation.
         integratePositions(body, velocityStart, tau);
-        bookContact(body, restingWork, energyOf(body) - energyStart);
-        // 6. Push the body out of any penetration left by the sub-step.
+        bookContact(body, restingWork, energyOf(body) - energyStart, false);
+        // 6. Keep the vertices that carried load on the plane, and push the body out of any
+        //    penetration left by the sub-step.
         const Real energyBeforeCorrection = energyOf(body);
+        keepLoadBearingOnPlane(body, contacts);
         correctPenetration(body);
         bookCorrection(body, energyBeforeCorrection);
         if (tau == remaining) {
@@ -332,7 +343,7 @@ void World::advanceAverage(BodyId id, Slot& slot, Real dt)
     const Vec3 velocityStart = body.linearVelocity;
     body.linearVelocity += m_settings.gravity * dt;
     integratePositions(body, velocityStart, dt);
-    bookContact(body, ContactWork{}, energyOf(body) - energyStart);
+    bookContact(body, ContactWork{}, energyOf(body) - energyStart, false);
     ContactManifold contacts = contactsOf(id);
     const bool wasTouching = slot.touchingGround;
     slot.touchingGround = contacts.pointCount > 0;
@@ -351,7 +362,7 @@ void World::advanceAverage(BodyId id, Slot& slot, Real dt)
                                              m_settings.solverIterations};
     const Real energyBeforeImpulse = energyOf(body);
     const ImpactOutcome outcome = resolveAverageContact(body, contacts, solveSettings);
-    bookContact(body, outcome.work, energyOf(body) - energyBeforeImpulse);
+    bookContact(body, outcome.work, energyOf(body) - energyBeforeImpulse, true);
     recordContacts(ContactPhase::Average, contacts, m_time + dt);
     // A resting body gains |g| dt of approach every step; only a real impact is reported.
     const Real restingApproach = glm::length(m_settings.gravity) * dt;
@@ -367,13 +378,15 @@ Real World::impactTolerance() const
     return kImpactTolerance * m_settings.contactTolerance;
 }
 
-ContactWork World::integrateVelocities(Body& body, ContactManifold& contacts, Real tau) const
+ContactWork World::integrateVelocities(Body& body, ContactManifold& contacts, Real tau,
+                                       const WarmStartCache& warmStart) const
 {
     return solveRestingContact(body, contacts, m_settings.gravity * tau, tau,
-                               {m_settings.restitutionThreshold, m_settings.solverIterations});
+                               {m_settings.restitutionThreshold, m_settings.solverIterations},
+                               warmStart);
 }
 
-void World::bookContact(Body& body, const ContactWork& work, Real energyChange) const
+void World::bookContact(Body& body, const ContactWork& work, Real energyChange, bool impact) const
 {
     // (8.3): the contact impulses' work is booked to them; whatever else changed the energy in
     // the same stage (gravity over a sub-step, the rotation split, rounding) is the integrator's.
@@ -381,7 +394,9 @@ void World::bookContact(Body& body, const ContactWork& work, Real energyChange) 
     body.ledger.removedByNormal -= work.normal;
     body.ledger.removedByFriction -= work.friction;
     body.ledger.removedByIntegration -= energyChange - contactWork;
-    body.ledger.contactWorkLastStep += contactWork;
+    if (impact) {
+        body.ledger.impactWorkLastStep += contactWork;
+    }
 }
 
 void World::bookCorrection(Body& body, Real energyBefore) const
@@ -392,7 +407,8 @@ void World::bookCorrection(Body& body, Real energyBefore) const
 void World::recordContacts(ContactPhase phase, const ContactManifold& contacts, Real time)
 {
     if (m_settings.recordContacts && contacts.pointCount > 0) {
-        m_contactRecords.push_back(ContactRecord{time, phase, contacts});
+        m_contactRecords.push_back(
+            ContactRecord{time, phase, body(contacts.body).position, contacts});
     }
 }
 
@@ -420,6 +436,28 @@ void World::integratePositions(Body& body, const Vec3& velocityStart, Real tau) 
                           : body.linearVelocity;
     body.position += tau * mean;
     integrateRotation(body, tau, m_settings.integrator);
+}
+
+void World::keepLoadBearingOnPlane(Body& body, const ContactManifold& contacts) const
+{
+    // (4.6): a vertex that pushed on the ground this sub-step ends it with zero normal velocity,
+    // but the position update is exact only to second order, so a body turning about such a
+    // vertex drifts off the plane by about tau^2 |w|^2 |r|. Bring the lowest of them back down;
+    // like (4.5) this moves the body without touching its velocity.
+    if (!m_ground) {
+        return;
+    }
+    const std::array<Real, 8> heights =
+        vertexHeights({body.position, body.orientation}, body.shape.halfExtents(), *m_ground);
+    Real lowest = std::numeric_limits<Real>::infinity();
+    for (int i = 0; i < contacts.pointCount; ++i) {
+        if (contacts.points[i].normalImpulse > 0.0) {
+            lowest = std::min(lowest, heights[contacts.points[i].vertex]);
+        }
+    }
+    if (lowest > 0.0 && lowest <= m_settings.contactTolerance) {
+        body.position -= lowest * Plane::normal();
+    }
 }
 
 void World::correctPenetration(Body& body) const

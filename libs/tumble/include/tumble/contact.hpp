@@ -66,6 +66,15 @@ struct ContactManifold {
     [[nodiscard]] Real maxPenetration() const;
 };
 
+/// The resting-contact impulses of a body's last step, per vertex and per second, so the next
+/// solve starts from them (warm starting, docs/physics/05-normal-impulse.md, (5.10)).
+struct WarmStartCache {
+    std::array<Real, 8> normalRate{};
+    std::array<Vec3, 8> frictionRate{};
+    /// Bit i set: vertex i was in resting contact.
+    std::uint8_t vertices = 0;
+};
+
 /// Which stage of the step solved a contact (docs/physics/README.md, the step).
 enum class ContactPhase : std::uint8_t { Impact, Resting, Average };
 
@@ -77,6 +86,8 @@ struct ContactRecord {
     /// Simulated time of the solve (the start of its sub-step), s.
     Real time = 0.0;
     ContactPhase phase = ContactPhase::Resting;
+    /// The body's centre of mass when the solve ran (the points' offsets are from it), m.
+    Vec3 centreOfMass{0.0};
     /// The points with their impulses and their velocities before and after.
     ContactManifold manifold{};
 };

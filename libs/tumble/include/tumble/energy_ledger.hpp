@@ -23,9 +23,11 @@ struct EnergyLedger {
     Real removedByRest = 0.0;
     /// Energy added by applyImpulse and by the setters (velocity, pose, mass, size, gravity).
     Real added = 0.0;
-    /// Work of all contact impulses during the last step; positive means the solver added
-    /// energy, which it should never do.
-    Real contactWorkLastStep = 0.0;
+    /// Work of the impact impulses during the last step; positive means the impact solver added
+    /// energy, which it must never do. (Resting contact is left out: there the split of a
+    /// sub-step's energy change between the contact force and gravity is itself only first-order
+    /// accurate, see docs/physics/08-energy-ledger.md.)
+    Real impactWorkLastStep = 0.0;
 
     [[nodiscard]] Real removed() const
     {

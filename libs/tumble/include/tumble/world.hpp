@@ -53,8 +53,8 @@ struct WorldSettings {
     /// rest instead of bouncing forever, m/s. Default 0.05.
     Real restitutionThreshold = 0.05;
     /// Most Gauss-Seidel sweeps per contact solve; a solve stops earlier once it has converged.
-    /// Default 64.
-    int solverIterations = 64;
+    /// Default 256 (a solve on the verge of sliding converges slowly; see docs/validation.md).
+    int solverIterations = 256;
     /// A body slower than these in contact with the ground for sleepTime is at rest. Defaults
     /// 1e-3 m/s, 1e-3 rad/s and 0.5 s.
     Real sleepLinearSpeed = 1e-3;
@@ -140,6 +140,8 @@ private:
         bool touchingGround = false;
         /// End of the first step of the current slow spell, s.
         Real slowSince = 0.0;
+        /// Last step's resting-contact impulses, to warm-start the next.
+        WarmStartCache warmStart{};
     };
 
     Body& mutableBody(BodyId id);
@@ -147,14 +149,15 @@ private:
     void advanceSequential(BodyId id, Slot& slot, Real dt);
     void advanceAverage(BodyId id, Slot& slot, Real dt);
     [[nodiscard]] Real impactTolerance() const;
-    [[nodiscard]] ContactWork integrateVelocities(Body& body, ContactManifold& contacts,
-                                                  Real tau) const;
-    void bookContact(Body& body, const ContactWork& work, Real energyChange) const;
+    [[nodiscard]] ContactWork integrateVelocities(Body& body, ContactManifold& contacts, Real tau,
+                                                  const WarmStartCache& warmStart) const;
+    void bookContact(Body& body, const ContactWork& work, Real energyChange, bool impact) const;
     void bookCorrection(Body& body, Real energyBefore) const;
     void recordContacts(ContactPhase phase, const ContactManifold& contacts, Real time);
     [[nodiscard]] SubstepMotion substepMotion(const Body& body, const Vec3& velocityStart,
                                               Real tau) const;
     void integratePositions(Body& body, const Vec3& velocityStart, Real tau) const;
+    void keepLoadBearingOnPlane(Body& body, const ContactManifold& contacts) const;
     void correctPenetration(Body& body) const;
     /// Runs `change` on a body and books the energy it adds as added by the user.
     template <typename Change>

@@ -54,7 +54,7 @@ Real timeOfImpact(const SubstepMotion& motion, const Vec3& halfExtents, const Pl
     const Real normalSpeed = std::max(std::abs(glm::dot(n, motion.velocityStart)),
                                       std::abs(glm::dot(n, motion.velocityEnd)));
     const Real spin = rotationRateBound(motion.start.orientation, motion.angularVelocity,
-                                        motion.inertiaBody, motion.integrator);
+                                        motion.inertiaBody, motion.tau, motion.integrator);
     const Real approachBound = normalSpeed + spin * glm::length(halfExtents);
     if (approachBound == 0.0) {
         return motion.tau;

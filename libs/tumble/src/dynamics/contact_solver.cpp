@@ -14,8 +14,12 @@ namespace {
 
 /// Below this sliding speed a vertex sticks, and the static coefficient bounds its friction, m/s.
 constexpr Real kStickingSpeed = 1e-3;
-/// A solve has converged when no impulse changed by more than this fraction of the largest.
-constexpr Real kConvergence = 1e-13;
+/// A solve has converged when no impulse changed by more than this fraction of the largest in a
+/// sweep. Impacts are rare and decide the bounce, so they go to the rounding noise of a sweep
+/// (about 1e-13); a warm-started resting solve stops at 1e-12, which it reaches in a sweep or two
+/// where the stricter value would spin on rounding noise until the iteration cap.
+constexpr Real kImpactConvergence = 1e-13;
+constexpr Real kRestingConvergence = 1e-12;
 
 /// Per-vertex data of a solve: the offset, the effective masses and the accumulated impulses
 /// (symbols of docs/physics/05-normal-impulse.md and 06-friction.md).
@@ -138,7 +142,7 @@ void solveFriction(const SolverPoint& point, Real v1, Real v2, Real& impulse1, R
 /// wins), accumulated impulses clamped to the cone |lambda_t| <= mu lambda_n (6.2) and
 /// lambda_n >= 0 (5.4). `targetScale` scales every restitution target (5.6).
 void solvePoints(Body& body, const SolverFrame& frame, std::span<SolverPoint> points,
-                 Real targetScale, int iterations)
+                 Real targetScale, int iterations, Real convergence)
 {
     for (int iteration = 0; iteration < iterations; ++iteration) {
         Real largestChange = 0.0;
@@ -169,7 +173,7 @@ void solvePoints(Body& body, const SolverFrame& frame, std::span<SolverPoint> po
                                       std::abs(change2)});
             largestImpulse = std::max(largestImpulse, point.normalImpulse);
         }
-        if (largestChange <= kConvergence * largestImpulse) {
+        if (largestChange <= convergence * largestImpulse) {
             break;
         }
     }
@@ -253,7 +257,7 @@ ImpactOutcome resolveImpact(Body& body, ContactManifold& manifold,
 
     PreparedSolve solve = prepared;
     solvePoints(body, solve.frame, std::span(solve.points.data(), solve.count), 1.0,
-                settings.iterations);
+                settings.iterations, kImpactConvergence);
     // (5.6): Newton's law at several points, or with sticking friction, can create energy. If it
     // did, scale the restitution targets down (bisection) to the largest that does not.
     const Real allowed = outcome.kineticEnergyBefore * (1.0 + 1e-12);
@@ -266,14 +270,14 @@ ImpactOutcome resolveImpact(Body& body, ContactManifold& manifold,
             body.angularVelocity = angularVelocityBefore;
             solve = prepared;
             solvePoints(body, solve.frame, std::span(solve.points.data(), solve.count), scale,
-                        settings.iterations);
+                        settings.iterations, kImpactConvergence);
             (body.kineticEnergy() > allowed ? reject : keep) = scale;
         }
         body.linearVelocity = velocityBefore;
         body.angularVelocity = angularVelocityBefore;
         solve = prepared;
         solvePoints(body, solve.frame, std::span(solve.points.data(), solve.count), keep,
-                    settings.iterations);
+                    settings.iterations, kImpactConvergence);
     }
     publish(solve, body, manifold, outcome);
     outcome.kineticEnergyAfter = body.kineticEnergy();
@@ -282,7 +286,8 @@ ImpactOutcome resolveImpact(Body& body, ContactManifold& manifold,
 
 ContactWork solveRestingContact(Body& body, ContactManifold& manifold,
                                 const Vec3& gravityImpulsePerMass, Real tau,
-                                const ContactSolveSettings& settings)
+                                const ContactSolveSettings& settings,
+                                const WarmStartCache& warmStart)
 {
     // Prepared before gravity acts, so a body at rest on a slope sees no sliding and keeps the
     // static coefficient.
@@ -292,15 +297,48 @@ ContactWork solveRestingContact(Body& body, ContactManifold& manifold,
         return ContactWork{};
     }
     for (int i = 0; i < solve.count; ++i) {
+        SolverPoint& point = solve.points[i];
         // (5.9): the target -h / tau lets a vertex at height h reach the plane, no further.
-        solve.points[i].targetNormalVelocity = -std::max(0.0, -manifold.points[i].penetration) / tau;
-        solve.points[i].restitution = RestitutionState::None;
+        point.targetNormalVelocity = -std::max(0.0, -manifold.points[i].penetration) / tau;
+        point.restitution = RestitutionState::None;
+        // (5.10): start from last step's impulse rates at this vertex, inside the cone.
+        const int vertex = manifold.points[i].vertex;
+        if (((warmStart.vertices >> vertex) & 1u) == 0u) {
+            continue;
+        }
+        point.normalImpulse = std::max(0.0, warmStart.normalRate[vertex] * tau);
+        const Vec3 friction = warmStart.frictionRate[vertex] * tau;
+        point.tangentImpulse1 = glm::dot(friction, solve.frame.t1);
+        point.tangentImpulse2 = glm::dot(friction, solve.frame.t2);
+        const Real bound = point.friction * point.normalImpulse;
+        const Real magnitude = std::hypot(point.tangentImpulse1, point.tangentImpulse2);
+        if (magnitude > bound) {
+            point.tangentImpulse1 *= bound / magnitude;
+            point.tangentImpulse2 *= bound / magnitude;
+        }
+        applyImpulseAtOffset(body,
+                             point.normalImpulse * solve.frame.n +
+                                 point.tangentImpulse1 * solve.frame.t1 +
+                                 point.tangentImpulse2 * solve.frame.t2,
+                             point.r);
     }
     solvePoints(body, solve.frame, std::span(solve.points.data(), solve.count), 1.0,
-                settings.iterations);
+                settings.iterations, kRestingConvergence);
     ImpactOutcome outcome;
     publish(solve, body, manifold, outcome);
     return outcome.work;
+}
+
+WarmStartCache makeWarmStart(const ContactManifold& manifold, Real tau)
+{
+    WarmStartCache cache;
+    for (int i = 0; i < manifold.pointCount; ++i) {
+        const ContactPoint& point = manifold.points[i];
+        cache.normalRate[point.vertex] = point.normalImpulse / tau;
+        cache.frictionRate[point.vertex] = point.frictionImpulse / tau;
+        cache.vertices = static_cast<std::uint8_t>(cache.vertices | (1u << point.vertex));
+    }
+    return cache;
 }
 
 ImpactOutcome resolveAverageContact(Body& body, ContactManifold& manifold,

@@ -11,7 +11,7 @@ struct ContactSolveSettings {
     /// Approach speeds below this get no restitution, m/s.
     Real restitutionThreshold = 0.05;
     /// Most Gauss-Seidel sweeps.
-    int iterations = 64;
+    int iterations = 256;
 };
 
 /// Work done on the body by contact impulses, J: the sum over the points of P . (u_before +
@@ -48,9 +48,15 @@ ImpactOutcome resolveImpact(Body& body, ContactManifold& manifold,
 /// resting contact with no restitution (5.5): a vertex on the plane may not approach it, and one
 /// still h above it may approach at most at h / tau, so it comes down onto the plane instead of
 /// hovering (5.9). Static or kinetic friction is chosen from the sliding before gravity acts.
+/// The solve starts from the impulses in `warmStart` (scaled to tau, clamped to the cone) for the
+/// vertices it lists (5.10).
 ContactWork solveRestingContact(Body& body, ContactManifold& manifold,
                                 const Vec3& gravityImpulsePerMass, Real tau,
-                                const ContactSolveSettings& settings);
+                                const ContactSolveSettings& settings,
+                                const WarmStartCache& warmStart);
+
+/// The cache for the next step from a published resting solve of length tau.
+WarmStartCache makeWarmStart(const ContactManifold& manifold, Real tau);
 
 /// The handouts' response (5.7): one impulse at the average touching vertex with restitution,
 /// and a Coulomb friction impulse opposing the sliding there; approachSpeed is measured at the

@@ -114,18 +114,42 @@ void integrateRotation(Quat& orientation, Vec3& angularVelocity, const Vec3& ine
 }
 
 Real rotationRateBound(const Quat& orientation, const Vec3& angularVelocity,
-                       const Vec3& inertiaBody, Integrator integrator)
+                       const Vec3& inertiaBody, Real maxStep, Integrator integrator)
 {
     if (integrator == Integrator::Handout) {
         return glm::length(angularVelocity);
     }
-    // Each piece of (2.7) turns the body at a constant rate; their sum bounds the composition.
-    // The body-frame momentum's components keep their magnitudes bounded by |Pi| throughout.
+    // (4.4): the pose after s is the composition (2.7) A(s/2) B(s/2) C(s) B(s/2) A(s/2); its
+    // turning rate in s is at most the sum of the rates at which the pieces' angles (and the last
+    // A's axis) change. The body-frame momentum Pi keeps |Pi| throughout; B turns it about the
+    // near axis (keeping Pi_near), C about the far axis (keeping Pi_far), so over s <= maxStep the
+    // components entering C and the second B stay near their start values. Bounding them by |Pi|
+    // instead would be valid but, for a long thin body (tiny I_far, huge c_far), thousands of
+    // times too large for the time of impact to converge.
     const RotationSplit split = chooseSplit(inertiaBody);
     const Vec3 bodyMomentum = inertiaBody * (glm::conjugate(orientation) * angularVelocity);
     const Real momentum = glm::length(bodyMomentum);
-    return momentum * (1.0 / inertiaBody[split.reference] + std::abs(split.nearCoefficient) +
-                       std::abs(split.farCoefficient));
+    const Real cNear = std::abs(split.nearCoefficient);
+    const Real cFar = std::abs(split.farCoefficient);
+    const Real piNear = std::abs(bodyMomentum[split.near]);
+    const Real piFar = std::abs(bodyMomentum[split.far]);
+    const Real piReference = std::abs(bodyMomentum[split.reference]);
+    const Real h = maxStep;
+    // First B: angle (s/2) c_near Pi_near.
+    const Real rateNear1 = 0.5 * cNear * piNear;
+    // C: angle s c_far Pi_far(s), Pi_far(s) turned by the first B by at most h rateNear1.
+    const Real piFarBound =
+        std::min(momentum, piFar + piReference * std::min(1.0, h * rateNear1));
+    const Real rateFar = cFar * (piFarBound + h * momentum * rateNear1);
+    // Second B: angle (s/2) c_near Pi_near(s), Pi_near(s) turned by C by at most h rateFar.
+    const Real piNearBound = std::min(momentum, piNear + momentum * std::min(1.0, h * rateFar));
+    const Real rateNear2 = 0.5 * cNear * (piNearBound + h * momentum * (rateFar + rateNear1));
+    // The two A: angle (s/2) |Pi| / I_ref each; the second one's axis Pi(s)/|Pi| turns at most
+    // at the sum of the B and C rates.
+    const Real rateMomentum = momentum / inertiaBody[split.reference];
+    const Real axisTurn =
+        2.0 * std::min(1.0, 0.5 * h * rateMomentum) * (rateNear1 + rateFar + rateNear2);
+    return rateMomentum + rateNear1 + rateFar + rateNear2 + axisTurn;
 }
 
 void integrateRotation(Body& body, Real dt, Integrator integrator)

@@ -13,10 +13,11 @@ namespace tumble {
 void integrateRotation(Quat& orientation, Vec3& angularVelocity, const Vec3& inertiaBody, Real dt,
                        Integrator integrator);
 
-/// An upper bound on the rate at which integrateRotation turns the body over any step length,
-/// rad/s (used by the time of impact, docs/physics/04-detection.md, (4.4)).
+/// An upper bound on the rate at which the pose integrateRotation gives after a step of length s
+/// changes with s, for every s in [0, maxStep], rad/s (used by the time of impact,
+/// docs/physics/04-detection.md, (4.4)).
 Real rotationRateBound(const Quat& orientation, const Vec3& angularVelocity,
-                       const Vec3& inertiaBody, Integrator integrator);
+                       const Vec3& inertiaBody, Real maxStep, Integrator integrator);
 
 /// Same, on a body, keeping its world inverse inertia consistent with the new orientation.
 void integrateRotation(Body& body, Real dt, Integrator integrator);
