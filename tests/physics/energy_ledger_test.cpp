@@ -38,7 +38,10 @@ TEST(EnergyLedger, BalancesAtEveryStepOfATumblingThrowAndTheSolverNeverAddsEnerg
     // It came to rest: the kinetic energy at the start went to restitution, friction and rest.
     EXPECT_GT(ledger.removedByNormal, 0.0);
     EXPECT_GT(ledger.removedByFriction, 0.0);
-    EXPECT_LT(std::abs(ledger.removedByIntegration), 1e-6 * scale);
+    // The integrator may lose a little (the normal position update in pushed sub-steps is
+    // semi-implicit, docs/physics/02-integration.md, (2.2a)) but never gains.
+    EXPECT_GT(ledger.removedByIntegration, -1e-6 * scale);
+    EXPECT_LT(ledger.removedByIntegration, 1e-3 * scale);
 }
 
 TEST(EnergyLedger, FaceDownImpactRemovesOneMinusESquaredOfTheImpactEnergy)

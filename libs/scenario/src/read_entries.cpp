@@ -13,6 +13,19 @@ namespace tumble::scenario::detail {
 
 namespace {
 
+/// An angular velocity within the valid range, and turning the body by at most the valid angle
+/// in one step of length dt.
+void checkAngularSpeed(const TomlReader& reader, const toml::node& node, const std::string& key,
+                       const Vec3& angularVelocity, Real dt, const std::string& context)
+{
+    const Real speed = glm::length(angularVelocity);
+    reader.checkRange(node, key, speed, kAngularSpeedRange, "the angular speed ", context);
+    reader.checkRange(node, key, speed * dt, kTurnPerStepRange,
+                      "the angle turned in one step (|angular_velocity| dt, dt = " +
+                          formatReal(dt) + " s) ",
+                      context);
+}
+
 /// size or scale (not both) into the cuboid's full extents.
 void readShape(const TomlReader& reader, const toml::table& table, const std::string& key,
                const std::string& context, BodyDef& def)
@@ -31,6 +44,17 @@ void readShape(const TomlReader& reader, const toml::table& table, const std::st
     if (scale != nullptr) {
         def.shape.size = Cuboid{}.size * reader.positiveVec3(*scale, key + ".scale", context);
     }
+    const toml::node* given = size != nullptr ? size : scale;
+    if (given != nullptr) {
+        const std::string givenKey = key + (size != nullptr ? ".size" : ".scale");
+        const Vec3& extents = def.shape.size;
+        const Real shortest = std::min({extents.x, extents.y, extents.z});
+        const Real longest = std::max({extents.x, extents.y, extents.z});
+        reader.checkRange(*given, givenKey, shortest, kSizeRange, "every edge ", context);
+        reader.checkRange(*given, givenKey, longest, kSizeRange, "every edge ", context);
+        reader.checkRange(*given, givenKey, longest / shortest, kAspectRange,
+                          "the longest edge over the shortest ", context);
+    }
 }
 
 /// elasticity, friction and static_friction into the body's Material.
@@ -47,6 +71,7 @@ void readMaterial(const TomlReader& reader, const toml::table& table, const std:
     });
     ifPresent(table, "friction", [&](const toml::node& node) {
         material.friction = reader.nonNegative(node, key + ".friction", context);
+        reader.checkRange(node, key + ".friction", material.friction, kFrictionRange, {}, context);
     });
     ifPresent(table, "static_friction", [&](const toml::node& node) {
         const Real staticFriction = reader.real(node, key + ".static_friction");
@@ -55,11 +80,13 @@ void readMaterial(const TomlReader& reader, const toml::table& table, const std:
                         "must be >= friction (" + formatReal(material.friction) + "), got " +
                             formatReal(staticFriction) + context);
         }
+        reader.checkRange(node, key + ".static_friction", staticFriction, kFrictionRange, {},
+                          context);
         material.staticFriction = staticFriction;
     });
 }
 
-BodySpec readBody(const TomlReader& reader, const toml::table& table, std::size_t index)
+BodySpec readBody(const TomlReader& reader, const toml::table& table, std::size_t index, Real dt)
 {
     const std::string key = "body[" + std::to_string(index) + "]";
     reader.checkKeys(table, key, kBodyKeys);
@@ -78,24 +105,33 @@ BodySpec readBody(const TomlReader& reader, const toml::table& table, std::size_
     readShape(reader, table, key, context, def);
     ifPresent(table, "mass", [&](const toml::node& node) {
         def.mass = reader.positive(node, key + ".mass", context);
+        reader.checkRange(node, key + ".mass", def.mass, kMassRange, {}, context);
     });
-    ifPresent(table, "position",
-              [&](const toml::node& node) { def.position = reader.vec3(node, key + ".position"); });
+    ifPresent(table, "position", [&](const toml::node& node) {
+        def.position = reader.vec3(node, key + ".position");
+        reader.checkRange(node, key + ".position", glm::length(def.position), kPositionRange,
+                          "the distance from the origin ", context);
+    });
     ifPresent(table, "orientation", [&](const toml::node& node) {
         def.orientation = reader.orientation(node, key + ".orientation");
     });
     ifPresent(table, "velocity", [&](const toml::node& node) {
         def.linearVelocity = reader.vec3(node, key + ".velocity");
+        reader.checkRange(node, key + ".velocity", glm::length(def.linearVelocity), kSpeedRange,
+                          "the speed ", context);
     });
     ifPresent(table, "angular_velocity", [&](const toml::node& node) {
         def.angularVelocity = reader.vec3(node, key + ".angular_velocity");
+        checkAngularSpeed(reader, node, key + ".angular_velocity", def.angularVelocity, dt,
+                          context);
     });
     readMaterial(reader, table, key, context, def.material);
     return spec;
 }
 
 /// The impulse (and offset) or the target (velocity and angular_velocity) of an entry.
-void readImpulseValue(const TomlReader& reader, const toml::table& table, ImpulseSpec& spec)
+void readImpulseValue(const TomlReader& reader, const toml::table& table, Real dt,
+                      ImpulseSpec& spec)
 {
     const std::string& key = spec.label;
     const toml::node* impulse = table.get("impulse");
@@ -115,7 +151,13 @@ void readImpulseValue(const TomlReader& reader, const toml::table& table, Impuls
     }
     if (impulse != nullptr) {
         spec.impulse = reader.vec3(*impulse, key + ".impulse");
+        reader.checkRange(*impulse, key + ".impulse", glm::length(*spec.impulse), kImpulseRange,
+                          "the length ");
         spec.offset = offset == nullptr ? Vec3(0.0) : reader.vec3(*offset, key + ".offset");
+        if (offset != nullptr) {
+            reader.checkRange(*offset, key + ".offset", glm::length(*spec.offset), kOffsetRange,
+                              "the length ");
+        }
         return;
     }
     if (offset != nullptr) {
@@ -129,10 +171,15 @@ void readImpulseValue(const TomlReader& reader, const toml::table& table, Impuls
                     "current value to keep one unchanged)");
     }
     spec.targetVelocity = reader.vec3(*velocity, key + ".velocity");
+    reader.checkRange(*velocity, key + ".velocity", glm::length(*spec.targetVelocity),
+                      kSpeedRange, "the speed ");
     spec.targetAngularVelocity = reader.vec3(*angularVelocity, key + ".angular_velocity");
+    checkAngularSpeed(reader, *angularVelocity, key + ".angular_velocity",
+                      *spec.targetAngularVelocity, dt, {});
 }
 
-ImpulseSpec readImpulse(const TomlReader& reader, const toml::table& table, std::size_t index)
+ImpulseSpec readImpulse(const TomlReader& reader, const toml::table& table, std::size_t index,
+                        Real dt)
 {
     ImpulseSpec spec;
     spec.label = "impulse[" + std::to_string(index) + "]";
@@ -149,7 +196,7 @@ ImpulseSpec readImpulse(const TomlReader& reader, const toml::table& table, std:
         reader.fail(table, key + ".body", "missing: the name of the body the impulse acts on");
     }
     spec.body = reader.string(*body, key + ".body");
-    readImpulseValue(reader, table, spec);
+    readImpulseValue(reader, table, dt, spec);
     return spec;
 }
 
@@ -193,7 +240,7 @@ void readBodies(const TomlReader& reader, const toml::table& root, Scenario& sce
     std::map<std::string, std::size_t> indexByName;
     for (std::size_t i = 0; i < bodies->size(); ++i) {
         const toml::table& table = *bodies->get(i)->as_table();
-        BodySpec spec = readBody(reader, table, i);
+        BodySpec spec = readBody(reader, table, i, scenario.dt);
         const auto [found, inserted] = indexByName.emplace(spec.name, i);
         if (!inserted) {
             const toml::node* name = table.get("name");
@@ -214,7 +261,7 @@ void readImpulses(const TomlReader& reader, const toml::table& root, Scenario& s
     }
     for (std::size_t i = 0; i < impulses->size(); ++i) {
         const toml::table& table = *impulses->get(i)->as_table();
-        ImpulseSpec spec = readImpulse(reader, table, i);
+        ImpulseSpec spec = readImpulse(reader, table, i, scenario.dt);
         const bool known =
             std::any_of(scenario.bodies.begin(), scenario.bodies.end(),
                         [&](const BodySpec& body) { return body.name == spec.body; });

@@ -27,6 +27,8 @@ void readSettings(const TomlReader& reader, const toml::table& world, WorldSetti
 {
     ifPresent(world, "gravity", [&](const toml::node& node) {
         settings.gravity = reader.vec3(node, "world.gravity");
+        reader.checkRange(node, "world.gravity", glm::length(settings.gravity),
+                          detail::kGravityRange, "the length ");
     });
     ifPresent(world, "integrator", [&](const toml::node& node) {
         const std::size_t index = reader.choice(node, "world.integrator", detail::kIntegratorNames);
@@ -38,6 +40,8 @@ void readSettings(const TomlReader& reader, const toml::table& world, WorldSetti
     });
     ifPresent(world, "contact_tolerance", [&](const toml::node& node) {
         settings.contactTolerance = reader.positive(node, "world.contact_tolerance");
+        reader.checkRange(node, "world.contact_tolerance", settings.contactTolerance,
+                          detail::kContactToleranceRange);
     });
     ifPresent(world, "restitution_threshold", [&](const toml::node& node) {
         settings.restitutionThreshold = reader.nonNegative(node, "world.restitution_threshold");
@@ -67,11 +71,18 @@ void readSettings(const TomlReader& reader, const toml::table& world, WorldSetti
 void readWorld(const TomlReader& reader, const toml::table& world, Scenario& scenario)
 {
     reader.checkKeys(world, "world", detail::kWorldKeys);
-    ifPresent(world, "dt",
-              [&](const toml::node& node) { scenario.dt = reader.positive(node, "world.dt"); });
+    ifPresent(world, "dt", [&](const toml::node& node) {
+        scenario.dt = reader.positive(node, "world.dt");
+        reader.checkRange(node, "world.dt", scenario.dt, detail::kDtRange);
+    });
     ifPresent(world, "duration", [&](const toml::node& node) {
         scenario.duration = reader.positive(node, "world.duration");
     });
+    // A run of more steps than the range allows would never end in practice.
+    if (const toml::node* node = world.get("duration") ? world.get("duration") : world.get("dt")) {
+        reader.checkRange(*node, "world.duration", scenario.duration / scenario.dt,
+                          detail::kStepCountRange, "the number of steps duration / dt ");
+    }
     readSettings(reader, world, scenario.settings);
 }
 
@@ -80,7 +91,10 @@ Plane readGround(const TomlReader& reader, const toml::table& ground)
     reader.checkKeys(ground, "ground", detail::kGroundKeys);
     Plane plane{};
     ifPresent(ground, "height",
-              [&](const toml::node& node) { plane.height = reader.real(node, "ground.height"); });
+              [&](const toml::node& node) {
+                  plane.height = reader.real(node, "ground.height");
+                  reader.checkRange(node, "ground.height", plane.height, detail::kGroundHeightRange);
+              });
     return plane;
 }
 

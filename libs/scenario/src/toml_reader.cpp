@@ -139,6 +139,35 @@ Real TomlReader::nonNegative(const toml::node& node, const std::string& key,
     return value;
 }
 
+void TomlReader::checkRange(const toml::node& node, const std::string& key, Real value,
+                            const ValidRange& range, std::string_view what,
+                            const std::string& context) const
+{
+    if (value >= range.low && value <= range.high) {
+        return;
+    }
+    // Built by appending: GCC 12 warns (-Wrestrict, falsely) on a chain of operator+ here.
+    std::string problem(what);
+    problem += "must be ";
+    if (range.low == 0.0) {
+        problem += "at most ";
+    } else {
+        problem += "between ";
+        problem += formatReal(range.low);
+        problem += " and ";
+    }
+    problem += formatReal(range.high);
+    if (!range.unit.empty()) {
+        problem += ' ';
+        problem += range.unit;
+    }
+    problem += ", got ";
+    problem += formatReal(value);
+    problem += context;
+    problem += " (valid ranges: docs/scenario-format.md)";
+    fail(node, key, problem);
+}
+
 Vec3 TomlReader::vec3(const toml::node& node, const std::string& key) const
 {
     const toml::array* array = node.as_array();

@@ -2,6 +2,8 @@
 // line and key (or the --set override a value came from).
 #pragma once
 
+#include "valid_ranges.hpp"
+
 #include "tumble/math.hpp"
 #include "tumble/scenario/scenario.hpp"
 
@@ -70,6 +72,12 @@ public:
     /// A string that is one of `allowed`, as its index; the message lists the allowed values.
     [[nodiscard]] std::size_t choice(const toml::node& node, const std::string& key,
                                      std::span<const std::string_view> allowed) const;
+    /// Fails unless `range.low <= value <= range.high` ("must be between LOW and HIGH UNIT" or,
+    /// for a range starting at 0, "must be at most HIGH UNIT"). `what` goes before "must" ("the
+    /// length " for a vector).
+    void checkRange(const toml::node& node, const std::string& key, Real value,
+                    const ValidRange& range, std::string_view what = {},
+                    const std::string& context = {}) const;
     /// [w, x, y, z] within 1e-6 of unit length (normalised), or { axis = [x, y, z], degrees = a }.
     [[nodiscard]] Quat orientation(const toml::node& node, const std::string& key) const;
 

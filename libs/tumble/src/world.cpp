@@ -305,9 +305,9 @@ void World::advanceSequential(BodyId id, Slot& slot, Real dt)
         //    is not the one searched: search again until no vertex crosses within it.
         for (int search = 0; m_ground && substep < kMaxSubsteps && search < kMaxImpactSearches;
              ++search) {
-            const Real impact = timeOfImpact(substepMotion(body, velocityStart, tau),
-                                             body.shape.halfExtents(), *m_ground,
-                                             vertexMask(contacts), impactTolerance());
+            const Real impact = timeOfImpact(
+                substepMotion(body, positionStartVelocity(velocityStart, body, contacts), tau),
+                body.shape.halfExtents(), *m_ground, vertexMask(contacts), impactTolerance());
             if (impact >= tau) {
                 break;
             }
@@ -319,7 +319,7 @@ void World::advanceSequential(BodyId id, Slot& slot, Real dt)
         slot.warmStart = makeWarmStart(contacts, tau);
         recordContacts(ContactPhase::Resting, contacts, m_time + elapsed);
         // 5. Integrate positions and orientation.
-        integratePositions(body, velocityStart, tau);
+        integratePositions(body, positionStartVelocity(velocityStart, body, contacts), tau);
         bookContact(body, restingWork, energyOf(body) - energyStart, false);
         // 6. Keep the vertices that carried load on the plane, and push the body out of any
         //    penetration left by the sub-step.
@@ -327,7 +327,8 @@ void World::advanceSequential(BodyId id, Slot& slot, Real dt)
         keepLoadBearingOnPlane(body, contacts);
         correctPenetration(body);
         bookCorrection(body, energyBeforeCorrection);
-        if (tau == remaining) {
+        // (not "tau == remaining": with a NaN state that never holds and the step never ended)
+        if (!(tau < remaining)) {
             break;
         }
         elapsed += tau;
@@ -410,6 +411,26 @@ void World::recordContacts(ContactPhase phase, const ContactManifold& contacts, 
         m_contactRecords.push_back(
             ContactRecord{time, phase, body(contacts.body).position, contacts});
     }
+}
+
+Vec3 World::positionStartVelocity(const Vec3& velocityStart, const Body& body,
+                                  const ContactManifold& contacts)
+{
+    // (2.2a): in free flight the mean of the start and end velocities moves the centre exactly.
+    // When the ground pushed, the normal part of the end velocity is what it allowed; the mean
+    // would move the body by half of what they removed (a rebound stopped by resting contact
+    // would still lift the body, putting potential energy in with no velocity to match), so the
+    // normal component moves with the end velocity, semi-implicitly. Tangential motion keeps the
+    // mean, which makes sliding under friction exact.
+    bool pushed = false;
+    for (int i = 0; i < contacts.pointCount; ++i) {
+        pushed |= contacts.points[i].normalImpulse > 0.0;
+    }
+    if (!pushed) {
+        return velocityStart;
+    }
+    const Vec3& n = contacts.normal;
+    return velocityStart + glm::dot(n, body.linearVelocity - velocityStart) * n;
 }
 
 SubstepMotion World::substepMotion(const Body& body, const Vec3& velocityStart, Real tau) const

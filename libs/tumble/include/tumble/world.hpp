@@ -154,6 +154,9 @@ private:
     void bookContact(Body& body, const ContactWork& work, Real energyChange, bool impact) const;
     void bookCorrection(Body& body, Real energyBefore) const;
     void recordContacts(ContactPhase phase, const ContactManifold& contacts, Real time);
+    /// The start velocity the position update uses (docs/physics/02-integration.md, (2.2a)).
+    [[nodiscard]] static Vec3 positionStartVelocity(const Vec3& velocityStart, const Body& body,
+                                                    const ContactManifold& contacts);
     [[nodiscard]] SubstepMotion substepMotion(const Body& body, const Vec3& velocityStart,
                                               Real tau) const;
     void integratePositions(Body& body, const Vec3& velocityStart, Real tau) const;

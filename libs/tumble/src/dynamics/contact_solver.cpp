@@ -109,10 +109,13 @@ void solveFriction(const SolverPoint& point, Real v1, Real v2, Real& impulse1, R
     impulse1 = -(point.tangentMass[0] * free1 + point.tangentMass[1] * free2);
     impulse2 = -(point.tangentMass[2] * free1 + point.tangentMass[3] * free2);
     const Real bound = point.friction * point.normalImpulse;
-    if (planarLength(impulse1, impulse2) <= bound) {
+    const Real freeMagnitude = planarLength(impulse1, impulse2);
+    if (freeMagnitude <= bound) {
         return;
     }
-    if (bound <= 0.0) {
+    // A bound negligible next to the free impulse (zero, or a subnormal friction coefficient) is
+    // no friction: Newton's method below would overflow 1/bound and turn it into NaN.
+    if (bound <= 1e-15 * freeMagnitude) {
         impulse1 = 0.0;
         impulse2 = 0.0;
         return;

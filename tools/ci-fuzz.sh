@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets with clang, AddressSanitizer and UndefinedBehaviorSanitizer
+# (build-fuzz/) and runs each for FUZZ_SECONDS (default 120) from its seeds and regressions. Any
+# crash, hang, leak or sanitizer report fails, and the input is left in build-fuzz/findings/;
+# copy it to tests/fuzz/regressions/<target>/ with the fix. Longer by hand: FUZZ_SECONDS=3600.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+FUZZ_SECONDS="${FUZZ_SECONDS:-120}"
+
+bash tools/install-deps.sh
+CXX="${FUZZ_CXX:-clang++}"
+cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER="$CXX" \
+    -DTUMBLE_BUILD_FUZZ=ON -DTUMBLE_SANITIZE=ON -DTUMBLE_BUILD_VIEWER=OFF -DTUMBLE_BUILD_CLI=OFF
+cmake --build build-fuzz --target scenario_loader_fuzzer world_step_fuzzer
+
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:halt_on_error=1"
+export UBSAN_OPTIONS="halt_on_error=1:abort_on_error=1:print_stacktrace=1"
+
+findings=build-fuzz/findings
+# Findings of an earlier run are not this run's: start empty (they were reported then).
+rm -rf "$findings"
+mkdir -p "$findings"
+status=0
+run_fuzzer() {
+    local target="$1"
+    shift
+    local corpus="build-fuzz/corpus/$target"
+    local log="build-fuzz/${target}.log"
+    mkdir -p "$corpus"
+    echo "ci-fuzz: $target for ${FUZZ_SECONDS} s"
+    # -timeout: one input running longer than this is a hang; -rss_limit_mb: a memory blow-up.
+    # The first corpus directory collects new inputs; the others are read only.
+    local rc=0
+    "build-fuzz/tests/fuzz/${target}_fuzzer" "$corpus" "$@" "tests/fuzz/regressions/$target" \
+        -max_total_time="$FUZZ_SECONDS" -timeout=10 -rss_limit_mb=2048 \
+        -artifact_prefix="$findings/${target}-" -print_final_stats=1 >"$log" 2>&1 || rc=$?
+    grep -E "^#[0-9]+ +(INITED|DONE)|^stat::(number_of_executed_units|average_exec_per_sec|new_units_added|peak_rss_mb)|^Done" "$log" || true
+    if [[ $rc -ne 0 ]] || compgen -G "$findings/${target}-*" >/dev/null; then
+        echo "ci-fuzz: $target FAILED (exit $rc); inputs in $findings, log $log" >&2
+        tail -n 60 "$log" >&2
+        status=1
+    else
+        echo "ci-fuzz: $target: no findings"
+    fi
+}
+
+run_fuzzer scenario_loader scenarios -dict=tests/fuzz/scenario.dict -max_len=4096
+run_fuzzer world_step tests/fuzz/seeds/world_step -max_len=256
+exit "$status"
