@@ -1,0 +1,4 @@
+// The viewer's OpenGL entry points: libepoxy, included here and nowhere else in the viewer.
+#pragma once
+
+#include <epoxy/gl.h>

@@ -1,0 +1,109 @@
+#include "viewer/scene_builder.hpp"
+
+#include "viewer/palette.hpp"
+
+#include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <algorithm>
+
+namespace tumble::viewer {
+namespace {
+
+void addArrow(SceneDrawList& list, const glm::vec3& from, const glm::vec3& vector,
+              const glm::vec3& colour, float radius, bool onTop = false)
+{
+    if (glm::length(vector) >= kMinArrowLength) {
+        list.arrows.push_back(
+            {.from = from, .to = from + vector, .colour = colour, .radius = radius, .onTop = onTop});
+    }
+}
+
+CuboidInstance cuboidOf(const Body& body, bool selected)
+{
+    const glm::vec3 position(body.position);
+    const glm::vec3 size(body.shape.size);
+    const glm::mat4 rotation = glm::mat4_cast(glm::quat(body.orientation));
+    const glm::mat4 model =
+        glm::scale(glm::translate(glm::mat4(1.0f), position) * rotation, size);
+    return {.model = model,
+            .normalMatrix = glm::inverseTranspose(glm::mat3(model)),
+            .centre = position,
+            .radius = 0.5f * glm::length(size),
+            .selected = selected};
+}
+
+void addBodyVectors(SceneDrawList& list, const Body& body, const ViewerSettings& settings,
+                    float radius)
+{
+    const glm::vec3 centre(body.position);
+    // body axes, each sticking out of its face
+    if (settings.showAxes) {
+        const glm::mat3 rotation = glm::mat3_cast(glm::quat(body.orientation));
+        const glm::vec3 half(body.shape.halfExtents());
+        const glm::vec3 colours[3] = {palette::kAxisX, palette::kAxisY, palette::kAxisZ};
+        for (int axis = 0; axis < 3; ++axis) {
+            addArrow(list, centre, rotation[axis] * (1.5f * half[axis] + 0.3f), colours[axis],
+                     radius);
+        }
+    }
+    if (settings.showAngularVelocity) {
+        addArrow(list, centre, glm::vec3(body.angularVelocity) * settings.vectorScale,
+                 palette::kAngularVelocity, radius);
+    }
+    if (settings.showAngularMomentum) {
+        addArrow(list, centre, glm::vec3(body.angularMomentum()) * settings.vectorScale,
+                 palette::kAngularMomentum, radius);
+    }
+}
+
+void addContacts(SceneDrawList& list, const ContactManifold& contacts)
+{
+    for (int i = 0; i < contacts.pointCount; ++i) {
+        list.markers.push_back(
+            {.position = glm::vec3(contacts.points[static_cast<std::size_t>(i)].position),
+             .colour = palette::kContactVertex,
+             .sizePixels = kVertexMarkerPixels});
+    }
+    if (contacts.pointCount > 0) {
+        list.markers.push_back({.position = glm::vec3(contacts.averagePoint()),
+                                .colour = palette::kContactAverage,
+                                .sizePixels = kAverageMarkerPixels});
+    }
+}
+
+} // namespace
+
+SceneDrawList buildScene(const World& world, std::span<const BodyId> bodies,
+                         std::span<const std::optional<CollisionEvent>> lastCollisions,
+                         const ViewerSettings& settings, float referenceHeight)
+{
+    SceneDrawList list;
+    list.gridIsGround = world.ground().has_value();
+    list.gridHeight =
+        list.gridIsGround ? static_cast<float>(world.ground()->height) : referenceHeight;
+
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        const Body& body = world.body(bodies[i]);
+        list.cuboids.push_back(cuboidOf(body, i == settings.selectedBody && bodies.size() > 1));
+        // arrows as thick as suits the body: thin on a small cube, thicker on a large block
+        const float arrowRadius = std::clamp(0.02f * list.cuboids.back().radius, 0.015f, 0.15f);
+        addBodyVectors(list, body, settings, arrowRadius);
+
+        if (settings.showContacts) {
+            addContacts(list, world.contactsOf(bodies[i]));
+        }
+        if (settings.showImpulses && i < lastCollisions.size() && lastCollisions[i]) {
+            const CollisionEvent& collision = *lastCollisions[i];
+            const glm::vec3 point(collision.manifold.averagePoint());
+            addArrow(list, point, glm::vec3(collision.normalImpulse) * settings.impulseScale,
+                     palette::kNormalImpulse, 1.5f * arrowRadius, true);
+            addArrow(list, point, glm::vec3(collision.frictionImpulse) * settings.impulseScale,
+                     palette::kFrictionImpulse, 1.5f * arrowRadius, true);
+        }
+    }
+    return list;
+}
+
+} // namespace tumble::viewer
