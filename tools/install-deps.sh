@@ -14,6 +14,21 @@ packages=(
     pkg-config
     # tumble plot and tumble validate --plot draw their PNG files with gnuplot
     gnuplot-nox
+    # tools/ci-fuzz.sh: clang with libFuzzer and the sanitizer runtimes; llvm-symbolizer
+    clang
+    libclang-rt-dev
+    llvm
+    # the viewer (tumble view; -DTUMBLE_BUILD_VIEWER=OFF builds without these): GLFW, Dear ImGui
+    # (with its backend sources), libepoxy for GL entry points, stb for PNG files; its capture
+    # tests run under Xvfb with Mesa's software renderer (llvmpipe)
+    libglfw3-dev
+    libimgui-dev
+    libepoxy-dev
+    libstb-dev
+    xvfb
+    xauth
+    libgl1-mesa-dri
+    libglx-mesa0
 )
 
 missing=()

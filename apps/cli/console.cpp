@@ -1,5 +1,7 @@
 #include "console.hpp"
 
+#include "output_file.hpp"
+
 #include "tumble/scenario/scenario.hpp"
 #include "tumble/shape.hpp"
 
@@ -9,7 +11,9 @@
 #include <glm/gtx/string_cast.hpp>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <exception>
 #include <iostream>
@@ -241,10 +245,29 @@ void printError(const std::string& message)
     std::cerr << "tumble: error: " << message << std::endl;
 }
 
+void printWarning(const std::string& message)
+{
+    std::cout.flush();
+    std::cerr << "tumble: warning: " << message << std::endl;
+}
+
 int runReportingErrors(const std::function<int()>& command)
 {
     try {
-        return command();
+        const int code = command();
+        // Console output that could not be written (stdout on a full disk) is a failed run too.
+        errno = 0;
+        std::cout.flush();
+        if (!std::cout) {
+            const int error = errno;
+            printError(std::string("cannot write standard output: ") +
+                       (error != 0 ? std::strerror(error) : "write error"));
+            return code == kExitOk ? kExitWriteFailure : code;
+        }
+        return code;
+    } catch (const OutputError& error) {
+        printError(error.what());
+        return kExitWriteFailure;
     } catch (const scenario::ScenarioError& error) {
         printError(error.what());
         return kExitBadInput;

@@ -19,6 +19,11 @@ constexpr int kExitOk = 0;
 constexpr int kExitFailure = 1;
 constexpr int kExitBadInput = 2;
 constexpr int kExitNonFinite = 3;
+/// An output file or stream that cannot be written (full disk, unwritable path); the issue asks
+/// for 3, shared with the non-finite state: the run's result could not be trusted or kept.
+constexpr int kExitWriteFailure = 3;
+/// A run stopped by a signal: 128 + its number (130 for SIGINT, 143 for SIGTERM).
+constexpr int kExitSignalBase = 128;
 
 /// glm::to_string of the single-precision vector: "vec3(0.150000, 0.000000, -1.000000)".
 std::string formatVec3(const Vec3& v);
@@ -61,5 +66,8 @@ int runReportingErrors(const std::function<int()>& command);
 
 /// Prints "tumble: error: <message>" on stderr.
 void printError(const std::string& message);
+
+/// Prints "tumble: warning: <message>" on stderr.
+void printWarning(const std::string& message);
 
 } // namespace tumble::cli

@@ -2,10 +2,10 @@
 // temporary file renamed on completion, so a failed run leaves no half file) or to stdout.
 #pragma once
 
+#include "output_file.hpp"
+
 #include "tumble/scenario/runner.hpp"
 
-#include <cstdio>
-#include <filesystem>
 #include <string>
 
 namespace tumble::cli {
@@ -14,21 +14,15 @@ class CsvWriter {
 public:
     /// "-" means stdout; any other path is written as PATH.tmp and renamed by finish().
     explicit CsvWriter(const std::string& path);
-    ~CsvWriter();
-    CsvWriter(const CsvWriter&) = delete;
-    CsvWriter& operator=(const CsvWriter&) = delete;
 
     /// One row per body: time, name, position, orientation (w, x, y, z), velocity, angular
     /// velocity, kinetic and potential energy, every number as %.17g.
     void writeSample(const scenario::Runner& runner);
     /// Flushes, closes and renames the temporary file into place. Throws on a write error.
-    void finish();
+    void finish() { m_output.finish(); }
 
 private:
-    std::string m_path;
-    std::filesystem::path m_temporary;
-    std::FILE* m_file = nullptr;
-    bool m_toStdout = false;
+    OutputFile m_output;
 };
 
 } // namespace tumble::cli

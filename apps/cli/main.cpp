@@ -1,7 +1,10 @@
 // tumble: the command-line program. Declares the commands; each lives in its own file.
 #include "check_command.hpp"
 #include "console.hpp"
+#include "plot_command.hpp"
 #include "run_command.hpp"
+#include "validate_command.hpp"
+#include "view_command.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -14,6 +17,12 @@ int main(int argc, char** argv)
     tumble::cli::CheckOptions checkOptions;
     const CLI::App* run = tumble::cli::addRunCommand(app, runOptions);
     const CLI::App* check = tumble::cli::addCheckCommand(app, checkOptions);
+    tumble::cli::ValidateOptions validateOptions;
+    const CLI::App* validate = tumble::cli::addValidateCommand(app, validateOptions);
+    tumble::cli::PlotOptions plotOptions;
+    const CLI::App* plot = tumble::cli::addPlotCommand(app, plotOptions);
+    tumble::cli::ViewOptions viewOptions;
+    const CLI::App* view = tumble::cli::addViewCommand(app, viewOptions);
 
     // CLI11 prints its own usage errors; every one of them exits with the bad-input code
     try {
@@ -26,6 +35,15 @@ int main(int argc, char** argv)
     return tumble::cli::runReportingErrors([&] {
         if (*run) {
             return tumble::cli::runCommand(runOptions);
+        }
+        if (*validate) {
+            return tumble::cli::validateCommand(validateOptions);
+        }
+        if (*plot) {
+            return tumble::cli::plotCommand(plotOptions);
+        }
+        if (*view) {
+            return tumble::cli::viewCommand(viewOptions);
         }
         return *check ? tumble::cli::checkCommand(checkOptions) : tumble::cli::kExitBadInput;
     });

@@ -2,11 +2,16 @@
 
 #include "console.hpp"
 #include "csv_writer.hpp"
+#include "interrupt.hpp"
+#include "ledger_csv.hpp"
 
 #include "tumble/scenario/runner.hpp"
 #include "tumble/scenario/scenario.hpp"
+#include "tumble/state_hash.hpp"
 
+#include <cinttypes>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <limits>
 #include <optional>
@@ -37,6 +42,20 @@ std::optional<std::size_t> firstNonFiniteBody(const scenario::Runner& runner)
     return std::nullopt;
 }
 
+/// Impact impulses must never add energy (docs/physics/08-energy-ledger.md); say so if they did.
+void warnAboutSolverEnergyGain(const scenario::Runner& runner)
+{
+    for (std::size_t i = 0; i < runner.bodies().size(); ++i) {
+        const Body& body = runner.world().body(runner.bodies()[i]);
+        const Real scale = 1e-9 * (std::abs(body.ledger.initial) + std::abs(body.ledger.added) + 1.0);
+        if (body.ledger.impactWorkLastStep > scale) {
+            printWarning("an impact added " + formatFull(body.ledger.impactWorkLastStep) +
+                         " J to " + runner.bodyName(i) + " in the step ending at t = " +
+                         formatFull(runner.time()) + " s");
+        }
+    }
+}
+
 } // namespace
 
 CLI::App* addRunCommand(CLI::App& app, RunOptions& options)
@@ -49,12 +68,21 @@ CLI::App* addRunCommand(CLI::App& app, RunOptions& options)
     command->add_option("--every", options.every, "Steps between CSV samples (>= 1, default 1)")
         ->type_name("N")
         ->check(CLI::Range(1, std::numeric_limits<int>::max()).description(""));
+    command->add_option("--energy-csv", options.energyCsvPath,
+                        "Write each body's energy ledger, every step, to this CSV file")
+        ->type_name("PATH");
+    command->add_option("--contacts-csv", options.contactsCsvPath,
+                        "Write every contact point of every step to this CSV file")
+        ->type_name("PATH");
     command->add_option("--duration", options.duration,
                         "Simulated time, s (same as --set world.duration=T)")
         ->type_name("T");
     command->add_option("--dt", options.dt, "Time step, s (same as --set world.dt=S)")
         ->type_name("S");
     command->add_flag("--quiet,-q", options.quiet, "Print no per-event lines");
+    command->add_flag("--hash", options.hash,
+                      "Print a hash of the final state (FNV-1a 64 of every body's position, "
+                      "orientation and velocities) to compare runs");
     command->add_option("--set", options.overrides,
                         "Override a scenario value, KEY=VALUE (world.dt=0.001, rb.elasticity=0.7); "
                         "repeatable")
@@ -73,7 +101,8 @@ int runCommand(const RunOptions& options)
     if (!options.dt.empty()) {
         overrides.push_back("world.dt=" + options.dt);
     }
-    const scenario::Scenario loaded = scenario::loadScenario(options.file, overrides);
+    scenario::Scenario loaded = scenario::loadScenario(options.file, overrides);
+    loaded.settings.recordContacts = !options.contactsCsvPath.empty();
     scenario::Runner runner(loaded);
 
     // with the CSV on stdout the console report moves to stderr and drops the event lines
@@ -83,13 +112,25 @@ int runCommand(const RunOptions& options)
     if (!options.csvPath.empty()) {
         csv.emplace(options.csvPath);
     }
+    std::optional<EnergyCsv> energyCsv;
+    if (!options.energyCsvPath.empty()) {
+        energyCsv.emplace(options.energyCsvPath);
+        energyCsv->writeStep(runner);
+    }
+    std::optional<ContactsCsv> contactsCsv;
+    if (!options.contactsCsvPath.empty()) {
+        contactsCsv.emplace(options.contactsCsvPath);
+    }
 
     const long long stepCount = stepsFor(loaded.duration, loaded.dt);
     console.printHeader(runner, stepCount);
     if (csv) {
         csv->writeSample(runner);
     }
-    for (long long i = 0; i < stepCount; ++i) {
+    // SIGINT/SIGTERM stop the loop at the next step; the output is then completed up to there
+    const InterruptGuard interruptGuard;
+    long long lastSample = 0;
+    for (long long i = 0; i < stepCount && InterruptGuard::received() == 0; ++i) {
         const scenario::StepReport report = runner.step();
         console.printStep(runner, report);
         if (const auto bad = firstNonFiniteBody(runner)) {
@@ -99,14 +140,44 @@ int runCommand(const RunOptions& options)
         }
         if (csv && runner.stepCount() % options.every == 0) {
             csv->writeSample(runner);
+            lastSample = runner.stepCount();
         }
+        if (energyCsv) {
+            energyCsv->writeStep(runner);
+        }
+        if (contactsCsv) {
+            contactsCsv->writeStep(runner);
+        }
+        warnAboutSolverEnergyGain(runner);
     }
-    console.printUnusedImpulses(runner, runner.time());
+    const int stoppedBy = InterruptGuard::received();
+    if (stoppedBy != 0) {
+        printError(std::string("interrupted by ") + signalName(stoppedBy) + ": stopped at t = " +
+                   formatFull(runner.time()) + " s after " + std::to_string(runner.stepCount()) +
+                   " of " + std::to_string(stepCount) + " steps; output files hold the run up " +
+                   "to that time");
+        if (csv && lastSample != runner.stepCount()) {
+            csv->writeSample(runner);
+        }
+    } else {
+        console.printUnusedImpulses(runner, runner.time());
+    }
     console.printSummary(runner);
+    if (options.hash) {
+        char hash[32];
+        std::snprintf(hash, sizeof hash, "%016" PRIx64, stateHash(runner.world(), runner.bodies()));
+        (csvToStdout ? std::cerr : std::cout) << "state hash: " << hash << '\n';
+    }
     if (csv) {
         csv->finish();
     }
-    return kExitOk;
+    if (energyCsv) {
+        energyCsv->finish();
+    }
+    if (contactsCsv) {
+        contactsCsv->finish();
+    }
+    return stoppedBy != 0 ? kExitSignalBase + stoppedBy : kExitOk;
 }
 
 } // namespace tumble::cli

@@ -15,10 +15,15 @@ struct RunOptions {
     std::string csvPath;
     /// Steps between CSV samples (>= 1).
     int every = 1;
+    /// Energy ledger and contact ledger CSV paths; empty for none.
+    std::string energyCsvPath;
+    std::string contactsCsvPath;
     /// Shorthands for --set world.duration= and --set world.dt=; empty when not given.
     std::string duration;
     std::string dt;
     bool quiet = false;
+    /// Print "state hash: <16 hex digits>" of the final state (tumble/state_hash.hpp).
+    bool hash = false;
     /// "KEY=VALUE" overrides, in command-line order.
     std::vector<std::string> overrides;
 };

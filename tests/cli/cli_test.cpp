@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -409,6 +410,72 @@ TEST_F(CliTest, EveryScenarioFileChecksOk)
         ++checked;
     }
     EXPECT_GE(checked, 6);
+}
+
+TEST_F(CliTest, ValidatePassesEveryCaseAndWritesTheTable)
+{
+    const fs::path csv = dir() / "validation.csv";
+    // The table only: the convergence study runs every case at five steps, which the library's
+    // own tests cover (tests/validation); here the command's exit code and output are checked.
+    const Result result =
+        runTumble({"validate", "--no-study", "--csv", csv.string()}, Capture::StdoutOnly);
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_EQ(result.output.find("FAIL"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("intermediate axis"), std::string::npos);
+    EXPECT_NE(result.output.find(" 0 failed"), std::string::npos);
+    const std::vector<std::string> rows = lines(readFile(csv));
+    ASSERT_GT(rows.size(), 40u);
+    EXPECT_EQ(rows.front(), "case,quantity,dt,exact,value,error,tolerance,pass");
+}
+
+TEST_F(CliTest, EnergyLedgerBalancesAndContactLedgerListsEveryPoint)
+{
+    const fs::path energy = dir() / "energy.csv";
+    const fs::path contacts = dir() / "contacts.csv";
+    const Result result =
+        runTumble({"run", (kScenarioDir / "part3_task4_friction.toml").string(), "--quiet",
+                   "--energy-csv", energy.string(), "--contacts-csv", contacts.string()});
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_EQ(result.output.find("warning"), std::string::npos) << result.output;
+
+    const std::vector<std::string> energyRows = lines(readFile(energy));
+    ASSERT_EQ(energyRows.size(), 2u + 2400u); // header, t = 0, one row per step
+    for (std::size_t i = 1; i < energyRows.size(); ++i) {
+        // the last column is total + removed - added - initial
+        const double balance = std::stod(energyRows[i].substr(energyRows[i].rfind(',') + 1));
+        ASSERT_LT(std::abs(balance), 1e-9 * 100.0) << energyRows[i];
+    }
+
+    const std::vector<std::string> contactRows = lines(readFile(contacts));
+    ASSERT_GT(contactRows.size(), 100u);
+    EXPECT_EQ(contactRows.front().substr(0, 26), "time,body,phase,vertex,px,");
+    int impacts = 0;
+    for (const std::string& row : contactRows) {
+        impacts += row.find(",impact,") != std::string::npos ? 1 : 0;
+    }
+    EXPECT_GT(impacts, 0);
+}
+
+TEST_F(CliTest, PlotDrawsAPngOfALedger)
+{
+    const fs::path energy = dir() / "energy.csv";
+    ASSERT_EQ(runTumble({"run", (kScenarioDir / "face_down_drop.toml").string(), "--quiet",
+                         "--energy-csv", energy.string()})
+                  .exitCode,
+              0);
+    const Result result = runTumble({"plot", energy.string()});
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    const std::string png = readFile(dir() / "energy.png");
+    ASSERT_GT(png.size(), 1000u);
+    EXPECT_EQ(png.substr(1, 3), "PNG");
+}
+
+TEST_F(CliTest, PlotRejectsAFileThatIsNotTumbleCsv)
+{
+    const std::string path = writeScenario("other.csv", "a,b,c\n1,2,3\n");
+    const Result result = runTumble({"plot", path}, Capture::StderrOnly);
+    EXPECT_EQ(result.exitCode, 2) << result.output;
+    EXPECT_NE(result.output.find("unknown header"), std::string::npos) << result.output;
 }
 
 } // namespace

@@ -1,0 +1,117 @@
+#include "view_command.hpp"
+
+#include "console.hpp"
+
+#include "tumble/scenario/runner.hpp"
+
+#if TUMBLE_HAS_VIEWER
+#include "viewer/viewer.hpp"
+#endif
+
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <utility>
+
+namespace tumble::cli {
+namespace {
+
+/// Accepted image and window sizes, pixels per side.
+constexpr int kMinSide = 16;
+constexpr int kMaxSide = 8192;
+
+/// "WxH" to a width and height within the accepted sizes.
+std::optional<std::pair<int, int>> parseSize(const std::string& text)
+{
+    int width = 0;
+    int height = 0;
+    char rest = 0;
+    if (std::sscanf(text.c_str(), "%dx%d%c", &width, &height, &rest) != 2 || width < kMinSide ||
+        height < kMinSide || width > kMaxSide || height > kMaxSide) {
+        return std::nullopt;
+    }
+    return std::make_pair(width, height);
+}
+
+#if TUMBLE_HAS_VIEWER
+/// The log panel gets the console lines `tumble run` prints.
+viewer::LogFormat consoleFormat()
+{
+    return {
+        .header =
+            [](const scenario::Runner& runner) {
+                const scenario::Scenario& scenario = runner.scenario();
+                const auto steps =
+                    static_cast<long long>(std::ceil(scenario.duration / scenario.dt - 1e-6));
+                std::ostringstream out;
+                Console(out, false).printHeader(runner, steps);
+                return out.str();
+            },
+        .step =
+            [](const scenario::Runner& runner, const scenario::StepReport& report) {
+                std::ostringstream out;
+                Console(out, false).printStep(runner, report);
+                return out.str();
+            },
+    };
+}
+#endif
+
+} // namespace
+
+CLI::App* addViewCommand(CLI::App& app, ViewOptions& options)
+{
+    CLI::App* command =
+        app.add_subcommand("view", "Watch a scenario in a window, or capture a frame as PNG");
+    command->add_option("FILE", options.file,
+                        "Scenario file (TOML); default scenarios/part3_task4_friction.toml")
+        ->type_name("");
+    command->add_option("--screenshot", options.screenshot,
+                        "Render one frame at --at into this PNG file and exit")
+        ->type_name("OUT.png");
+    command->add_option("--at", options.at, "Simulated time to capture, or to open paused at, s (default 0)")
+        ->type_name("T")
+        ->check(CLI::NonNegativeNumber.description(""));
+    command->add_option("--size", options.size, "Window or image size (default 1280x720)")
+        ->type_name("WxH");
+    command->add_flag("--no-ui", options.noUi, "Draw the 3D view without the panels");
+    command->add_option("--set", options.overrides,
+                        "Override a scenario value, KEY=VALUE (as for run); repeatable")
+        ->type_name("KEY=VALUE")
+        ->allow_extra_args(false);
+    return command;
+}
+
+int viewCommand(const ViewOptions& options)
+{
+    const auto size = parseSize(options.size);
+    if (!size) {
+        printError("--size: expected WxH with each side from " + std::to_string(kMinSide) +
+                   " to " + std::to_string(kMaxSide) + " pixels, got \"" + options.size + "\"");
+        return kExitBadInput;
+    }
+#if TUMBLE_HAS_VIEWER
+    viewer::ViewerOptions viewerOptions;
+    viewerOptions.file = options.file;
+    viewerOptions.overrides = options.overrides;
+    if (!options.screenshot.empty()) {
+        viewerOptions.screenshot = options.screenshot;
+    }
+    if (!options.at.empty()) {
+        viewerOptions.at = std::stod(options.at);
+    }
+    viewerOptions.width = size->first;
+    viewerOptions.height = size->second;
+    viewerOptions.showUi = !options.noUi;
+    viewerOptions.log = consoleFormat();
+    return viewer::runViewer(viewerOptions);
+#else
+    printError("this tumble was built without the viewer; install its packages "
+               "(bash tools/install-deps.sh) and configure with -DTUMBLE_BUILD_VIEWER=ON");
+    return kExitBadInput;
+#endif
+}
+
+} // namespace tumble::cli
