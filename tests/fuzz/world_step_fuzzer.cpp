@@ -27,6 +27,9 @@ public:
     {
         std::uint64_t bits = 0;
         const std::size_t count = std::min<std::size_t>(8, m_size - m_used);
+        if (count == 0) {
+            return 0.0; // memcpy from a null pointer is undefined even for zero bytes
+        }
         std::memcpy(&bits, m_data + m_used, count);
         m_used += count;
         return static_cast<Real>(bits >> 11) * 0x1.0p-53;

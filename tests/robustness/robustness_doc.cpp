@@ -163,17 +163,16 @@ std::string document()
             << " | " << (o.asleep ? "yes" : "no") << " |\n";
     }
 
-    out << "\n## Known limit: very fast spin per step\n\n"
+    out << "\n## Very fast spin per step\n\n"
         << "The exact rotation (docs/physics/02-integration.md, (2.7)) conserves angular momentum "
-           "exactly and the energy to second order in the angle turned per step, theta = |w| dt: "
-           "measured worst relative error about 0.01 theta^2 for theta <= 1 rad (1e-6 at 0.01 "
-           "rad, 1e-4 at 0.1 rad, 1e-2 at 1 rad) for boxes with three different moments (none for "
-           "two equal moments). Beyond about 2 rad per step the error is no longer small (x70 "
-           "energy at 3 rad per step, bounded by |L|^2 / (2 I_min)). The loader therefore rejects "
-           "an initial or target spin with |w| dt above 0.5 rad; a spin that large can still "
-           "arise from an impact (a thin rod struck at its tip at over 100 m/s with dt = 1/80 s "
-           "spins at thousands of rad/s). The cure is a smaller dt; `tumble run` prints the "
-           "energies so the effect is visible. The fuzzer holds the energy bound only while "
+           "exactly and the energy to second order in the angle one split composition turns: "
+           "about 0.01 theta^2 relative for boxes with three different moments (none for two "
+           "equal moments). One composition per step gained x70 energy at 3 rad per step, a spin "
+           "an impact can cause (a thin rod struck at its tip at over 100 m/s with dt = 1/80 s). "
+           "A step is therefore divided so that no composition turns more than 0.5 rad ((2.7a); "
+           "a 1 x 2 x 3 box at 2.6 rad per step stays within 4e-4 of its energy, "
+           "tests/tumble/integrator_test.cpp). The loader still rejects an initial or target "
+           "spin with |w| dt above 0.5 rad, and the fuzzer holds the energy bound only while "
            "theta <= 1 rad.\n\n";
 
     out << "## Long runs\n\n"
