@@ -169,8 +169,9 @@ std::string document()
            "about 0.01 theta^2 relative for boxes with three different moments (none for two "
            "equal moments). One composition per step gained x70 energy at 3 rad per step, a spin "
            "an impact can cause (a thin rod struck at its tip at over 100 m/s with dt = 1/80 s). "
-           "A step is therefore divided so that no composition turns more than 0.5 rad ((2.7a); "
-           "a 1 x 2 x 3 box at 2.6 rad per step stays within 4e-4 of its energy, "
+           "A step is therefore divided so that no composition turns more than 0.5 rad, up to 8 "
+           "compositions ((2.7a); a 1 x 2 x 3 box at 2.6 rad per step stays within 1.1e-3 of its "
+           "energy, "
            "tests/tumble/integrator_test.cpp). The loader still rejects an initial or target "
            "spin with |w| dt above 0.5 rad, and the fuzzer holds the energy bound only while "
            "theta <= 1 rad.\n\n";

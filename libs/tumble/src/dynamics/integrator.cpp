@@ -41,9 +41,10 @@ void turnAboutMomentum(Quat& orientation, const Vec3& bodyMomentum, Real referen
     orientation = orientation * axisAngle(bodyMomentum / momentum, h * momentum / referenceInertia);
 }
 
-/// Largest turn one composition of (2.7) makes, rad, and the most compositions per call.
+/// Largest turn one composition of (2.7) makes, rad, and the most compositions per call: the
+/// time-of-impact search evaluates poses many times per sub-step, so the division is capped.
 constexpr Real kMaxTurnPerSplit = 0.5;
-constexpr Real kMaxSplitPieces = 4096.0;
+constexpr Real kMaxSplitPieces = 8.0;
 
 /// The split of (2.7): the reference moment is one of the two closest principal moments; for a
 /// symmetric body the other one's term vanishes and the remaining flows commute, so the split is
