@@ -28,6 +28,8 @@ run_fuzzer() {
     local corpus="build-fuzz/corpus/$target"
     local log="build-fuzz/${target}.log"
     mkdir -p "$corpus"
+    # git keeps no empty folder: a target with no regression yet has none in a fresh clone
+    mkdir -p "tests/fuzz/regressions/$target"
     echo "ci-fuzz: $target for ${FUZZ_SECONDS} s"
     # -timeout: one input running longer than this is a hang; -rss_limit_mb: a memory blow-up.
     # The first corpus directory collects new inputs; the others are read only.
