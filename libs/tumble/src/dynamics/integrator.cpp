@@ -113,6 +113,15 @@ void rotateHandout(Quat& orientation, const Vec3& angularVelocity, Real dt)
     rotation += dt * skew(angularVelocity) * rotation;
     const Vec3 column0 = glm::normalize(rotation[0]);
     const Vec3 column1 = glm::normalize(rotation[1] - glm::dot(column0, rotation[1]) * column0);
+    if (!isFinite(column0) || !isFinite(column1)) {
+        // A turn of many radians in one step (the handout scheme can spin itself up) leaves
+        // columns too close to parallel for Gram-Schmidt; rotate by w dt exactly instead of
+        // producing NaN (found by the world-stepping fuzzer).
+        const Real angle = glm::length(angularVelocity) * dt;
+        orientation = glm::normalize(axisAngle(angularVelocity / glm::length(angularVelocity), angle) *
+                                     orientation);
+        return;
+    }
     rotation = Mat3(column0, column1, glm::cross(column0, column1));
     const Quat updated = glm::normalize(glm::quat_cast(rotation));
     // q and -q are the same rotation; keep the sign continuous so printed quaternions do not jump.
