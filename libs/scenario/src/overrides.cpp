@@ -18,7 +18,8 @@ namespace tumble::scenario::detail {
 namespace {
 
 constexpr std::string_view kTargetsHint =
-    "world.<key>, ground.height, <body name>.<key> or impulse[<index>].<key>";
+    "world.<key>, ground.height, <body name>.<key>, impulse[<index>].<key> or "
+    "spawn[<index>].<key>";
 
 [[noreturn]] void failOverride(const std::string& key, const std::string& problem)
 {
@@ -96,16 +97,18 @@ std::optional<std::size_t> parseIndex(std::string_view section, std::string_view
     return index;
 }
 
-Target impulseTarget(toml::table& root, std::size_t index, const std::string& key)
+/// Entry `index` of the array of tables `name` ([[impulse]], [[spawn]]).
+Target indexedTarget(toml::table& root, std::string_view name, std::size_t index,
+                     std::span<const std::string_view> known, const std::string& key)
 {
-    toml::array* impulses = arrayOfTables(root, "impulse", key);
-    const std::size_t count = impulses == nullptr ? 0 : impulses->size();
+    toml::array* entries = arrayOfTables(root, name, key);
+    const std::size_t count = entries == nullptr ? 0 : entries->size();
+    const std::string label = std::string(name) + "[" + std::to_string(index) + "]";
     if (index >= count) {
-        failOverride(key, "no impulse[" + std::to_string(index) + "]: the scenario has " +
-                              std::to_string(count) + " [[impulse]] entries");
+        failOverride(key, "no " + label + ": the scenario has " + std::to_string(count) + " [[" +
+                              std::string(name) + "]] entries");
     }
-    return Target{impulses->get(index)->as_table(), "impulse[" + std::to_string(index) + "]",
-                  kImpulseKeys};
+    return Target{entries->get(index)->as_table(), label, known};
 }
 
 Target bodyTarget(toml::table& root, std::string_view section, const std::string& key)
@@ -137,7 +140,10 @@ Target findTarget(toml::table& root, std::string_view section, const std::string
         return Target{&tableOrCreate(root, "ground", key), "ground", kGroundKeys};
     }
     if (const std::optional<std::size_t> index = parseIndex(section, "impulse")) {
-        return impulseTarget(root, *index, key);
+        return indexedTarget(root, "impulse", *index, kImpulseKeys, key);
+    }
+    if (const std::optional<std::size_t> index = parseIndex(section, "spawn")) {
+        return indexedTarget(root, "spawn", *index, kSpawnKeys, key);
     }
     return bodyTarget(root, section, key);
 }

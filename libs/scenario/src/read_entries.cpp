@@ -11,8 +11,6 @@
 
 namespace tumble::scenario::detail {
 
-namespace {
-
 /// An angular velocity within the valid range, and turning the body by at most the valid angle
 /// in one step of length dt.
 void checkAngularSpeed(const TomlReader& reader, const toml::node& node, const std::string& key,
@@ -85,6 +83,8 @@ void readMaterial(const TomlReader& reader, const toml::table& table, const std:
         material.staticFriction = staticFriction;
     });
 }
+
+namespace {
 
 BodySpec readBody(const TomlReader& reader, const toml::table& table, std::size_t index, Real dt)
 {
@@ -200,6 +200,18 @@ ImpulseSpec readImpulse(const TomlReader& reader, const toml::table& table, std:
     return spec;
 }
 
+std::string bodyNames(const Scenario& scenario)
+{
+    std::string names;
+    for (const BodySpec& body : scenario.bodies) {
+        names += names.empty() ? "" : ", ";
+        names += body.name;
+    }
+    return names;
+}
+
+} // namespace
+
 /// The array of tables `name` ([[body]], [[impulse]]), or null when absent.
 const toml::array* arrayOfTables(const TomlReader& reader, const toml::table& root,
                                  std::string_view name)
@@ -217,25 +229,11 @@ const toml::array* arrayOfTables(const TomlReader& reader, const toml::table& ro
     return array;
 }
 
-std::string bodyNames(const Scenario& scenario)
-{
-    std::string names;
-    for (const BodySpec& body : scenario.bodies) {
-        names += names.empty() ? "" : ", ";
-        names += body.name;
-    }
-    return names;
-}
-
-} // namespace
-
 void readBodies(const TomlReader& reader, const toml::table& root, Scenario& scenario)
 {
     const toml::array* bodies = arrayOfTables(reader, root, "body");
-    if (bodies == nullptr || bodies->empty()) {
-        throw ScenarioError(bodies == nullptr ? SourceLocation{reader.sourceName(), 0}
-                                              : reader.locate(*bodies),
-                            "body", "a scenario needs at least one [[body]]");
+    if (bodies == nullptr) {
+        return;
     }
     std::map<std::string, std::size_t> indexByName;
     for (std::size_t i = 0; i < bodies->size(); ++i) {

@@ -9,11 +9,37 @@
 
 namespace tumble::scenario::detail {
 
-/// Appends one BodySpec per [[body]] (at least one is required; names must be unique).
+/// The array of tables `name` ([[body]], [[impulse]], [[spawn]]), or null when absent.
+const toml::array* arrayOfTables(const TomlReader& reader, const toml::table& root,
+                                 std::string_view name);
+
+/// Fails unless |angularVelocity| is within the valid range and turns the body by at most the
+/// valid angle in one step of length dt.
+void checkAngularSpeed(const TomlReader& reader, const toml::node& node, const std::string& key,
+                       const Vec3& angularVelocity, Real dt, const std::string& context);
+
+/// `size` or `scale` (not both) of `table` into the cuboid's full extents, range-checked.
+void readShape(const TomlReader& reader, const toml::table& table, const std::string& key,
+               const std::string& context, BodyDef& def);
+
+/// elasticity, friction and static_friction of `table` into `material`.
+void readMaterial(const TomlReader& reader, const toml::table& table, const std::string& key,
+                  const std::string& context, Material& material);
+
+/// Appends one BodySpec per [[body]] (names must be unique).
 void readBodies(const TomlReader& reader, const toml::table& root, Scenario& scenario);
 
 /// Appends one ImpulseSpec per [[impulse]] (each naming a body already read) and sorts them by
 /// `at`, keeping file order for equal times.
 void readImpulses(const TomlReader& reader, const toml::table& root, Scenario& scenario);
+
+} // namespace tumble::scenario::detail
+
+namespace tumble::scenario::detail {
+
+/// Appends one SpawnSpec per [[spawn]] and the bodies it places to scenario.bodies; the world
+/// and ground must be read already (the heights are above the ground, the spin is checked
+/// against dt).
+void readSpawns(const TomlReader& reader, const toml::table& root, Scenario& scenario);
 
 } // namespace tumble::scenario::detail

@@ -110,6 +110,13 @@ Scenario readScenario(const TomlReader& reader, const toml::table& root)
         scenario.ground = readGround(reader, reader.table(node, "ground", "a table ([ground])"));
     });
     detail::readBodies(reader, root, scenario);
+    detail::readSpawns(reader, root, scenario);
+    if (scenario.bodies.empty()) {
+        const toml::node* bodies = root.get("body");
+        throw ScenarioError(bodies == nullptr ? SourceLocation{reader.sourceName(), 0}
+                                              : reader.locate(*bodies),
+                            "body", "a scenario needs at least one [[body]] or [[spawn]]");
+    }
     detail::readImpulses(reader, root, scenario);
     return scenario;
 }

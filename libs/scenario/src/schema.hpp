@@ -6,8 +6,8 @@
 
 namespace tumble::scenario::detail {
 
-inline constexpr std::array<std::string_view, 4> kTopLevelKeys{
-    "world", "ground", "body", "impulse"};
+inline constexpr std::array<std::string_view, 5> kTopLevelKeys{
+    "world", "ground", "body", "impulse", "spawn"};
 
 inline constexpr std::array<std::string_view, 12> kWorldKeys{
     "gravity", "dt", "duration", "integrator", "response", "contact_tolerance",
@@ -22,6 +22,10 @@ inline constexpr std::array<std::string_view, 11> kBodyKeys{
 
 inline constexpr std::array<std::string_view, 6> kImpulseKeys{
     "at", "body", "impulse", "offset", "velocity", "angular_velocity"};
+
+inline constexpr std::array<std::string_view, 12> kSpawnKeys{
+    "count", "seed", "spacing", "size", "mass", "height", "orientation", "angular_speed",
+    "velocity", "elasticity", "friction", "static_friction"};
 
 inline constexpr std::array<std::string_view, 2> kAxisAngleKeys{"axis", "degrees"};
 

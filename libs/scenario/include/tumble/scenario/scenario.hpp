@@ -6,6 +6,8 @@
 #include "tumble/shape.hpp"
 #include "tumble/world.hpp"
 
+#include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <span>
@@ -44,6 +46,34 @@ struct BodySpec {
     SourceLocation where{};
 };
 
+/// One [[spawn]] entry: `count` bodies on a square grid in x and z, each with a height, an
+/// orientation and a spin drawn from one seeded stream (docs/scenario-format.md, [[spawn]]).
+struct SpawnSpec {
+    std::size_t count = 0;
+    std::uint64_t seed = 0;
+    /// Distance between neighbouring grid points, m.
+    Real spacing = 0.0;
+    /// Size, mass, velocity and material of every body; position, orientation and angular
+    /// velocity are drawn.
+    BodyDef body{};
+    /// Centre-of-mass height above the ground, drawn uniformly in [low, high], m.
+    Real heightLow = 0.0;
+    Real heightHigh = 0.0;
+    /// A uniformly random rotation, or `body.orientation` for every body.
+    bool randomOrientation = false;
+    /// Angular speed drawn uniformly in [low, high] about a uniformly random axis, rad/s.
+    Real angularSpeedLow = 0.0;
+    Real angularSpeedHigh = 0.0;
+    SourceLocation where{};
+};
+
+/// The bodies a SpawnSpec places over `groundHeight`, named "<prefix><k>" (k from 1). The same
+/// spec gives the same bodies on every machine: std::mt19937_64 seeded with `seed`, drawn in the
+/// order height, orientation (3 numbers, when random), angular speed, axis (2) for each body
+/// in turn, each number mapped to [0, 1) by our own rule (RandomDraws).
+std::vector<BodySpec> spawnBodies(const SpawnSpec& spawn, Real groundHeight,
+                                  std::string_view prefix);
+
 /// One [[impulse]] entry: either an impulse at an offset, or a target the runner solves for.
 struct ImpulseSpec {
     /// Simulated time at which it is applied, s (>= 0).
@@ -73,7 +103,9 @@ struct Scenario {
     Real duration = 10.0;
     /// The ground plane; none when the file has no [ground] table.
     std::optional<Plane> ground;
+    /// The [[body]] entries, then the bodies of each [[spawn]] (named spawn<s>_<k>, 1-based).
     std::vector<BodySpec> bodies;
+    std::vector<SpawnSpec> spawns;
     /// Sorted by `at` (stable, so entries at the same time keep file order).
     std::vector<ImpulseSpec> impulses;
 };
