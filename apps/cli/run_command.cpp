@@ -80,6 +80,11 @@ CLI::App* addRunCommand(CLI::App& app, RunOptions& options)
     command->add_option("--dt", options.dt, "Time step, s (same as --set world.dt=S)")
         ->type_name("S");
     command->add_flag("--quiet,-q", options.quiet, "Print no per-event lines");
+    command
+        ->add_option("--threads", options.threads,
+                     "Threads to step the bodies on (default 0: one per core); the results are "
+                     "the same for any number")
+        ->check(CLI::NonNegativeNumber);
     command->add_flag("--hash", options.hash,
                       "Print a hash of the final state (FNV-1a 64 of every body's position, "
                       "orientation and velocities) to compare runs");
@@ -103,6 +108,7 @@ int runCommand(const RunOptions& options)
     }
     scenario::Scenario loaded = scenario::loadScenario(options.file, overrides);
     loaded.settings.recordContacts = !options.contactsCsvPath.empty();
+    loaded.settings.threads = options.threads;
     scenario::Runner runner(loaded);
 
     // with the CSV on stdout the console report moves to stderr and drops the event lines

@@ -26,6 +26,8 @@ struct RunOptions {
     bool hash = false;
     /// "KEY=VALUE" overrides, in command-line order.
     std::vector<std::string> overrides;
+    /// Threads the world steps its bodies on (WorldSettings::threads); 0: one per core.
+    int threads = 0;
 };
 
 /// Declares the `run` subcommand on `app`, filling `options` when parsed.

@@ -478,4 +478,24 @@ TEST_F(CliTest, PlotRejectsAFileThatIsNotTumbleCsv)
     EXPECT_NE(result.output.find("unknown header"), std::string::npos) << result.output;
 }
 
+TEST(CliRun, OneAndTwoThreadsWriteByteIdenticalCsv)
+{
+    // 100 tumbling cuboids (scenarios/s4_tumbling_cuboids.toml) over 3 s: impacts, sliding and
+    // sleep in several batches of the threaded step.
+    const fs::path dir = fs::temp_directory_path() / "tumble_cli_threads";
+    fs::create_directories(dir);
+    const fs::path scenario = kScenarioDir / "s4_tumbling_cuboids.toml";
+    std::vector<std::string> csvs;
+    for (const std::string threads : {"1", "2"}) {
+        const fs::path csv = dir / ("threads" + threads + ".csv");
+        const Result result = runTumble({"run", scenario.string(), "--quiet", "--duration", "3",
+                                         "--threads", threads, "--csv", csv.string()});
+        ASSERT_EQ(result.exitCode, 0) << result.output;
+        csvs.push_back(readFile(csv));
+    }
+    EXPECT_GT(csvs[0].size(), 100u * 720u * 20u);
+    EXPECT_TRUE(csvs[0] == csvs[1]);
+    EXPECT_EQ(runTumble({"run", scenario.string(), "--threads", "-1"}).exitCode, 2);
+}
+
 } // namespace

@@ -11,6 +11,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <thread>
+
+#ifdef TUMBLE_HAVE_OPENMP
+#include <omp.h>
+#endif
 
 namespace tumble {
 
@@ -28,6 +33,14 @@ constexpr int kMaxSubsteps = 32;
 /// Time-of-impact searches in one sub-step: each searches the motion re-solved for the shorter
 /// sub-step the previous one found (the fixed point is usually reached in a few).
 constexpr int kMaxImpactSearches = 64;
+/// Slots per batch: the unit step() hands to a thread. Fixed, so the batches (and the order in
+/// which their events are merged) do not depend on the number of threads; small enough that a
+/// few thousand bodies make enough batches to balance two to sixteen threads, large enough that
+/// handing one out costs little next to advancing it.
+constexpr std::size_t kBatchSize = 32;
+/// Events reserved per body, so that a step allocates nothing in the usual case: an impact
+/// starts at most two sub-steps of a body in most steps, and a body comes to rest once.
+constexpr std::size_t kReservedImpactsPerBody = 2;
 
 [[maybe_unused]] bool isValidDef(const BodyDef& def)
 {
@@ -121,6 +134,13 @@ BodyId World::createBody(const BodyDef& def)
         m_slots.emplace_back();
     }
     Slot& slot = m_slots[index];
+    if (index + 1 > m_batchEvents.size() * kBatchSize) {
+        m_batchEvents.emplace_back();
+        m_batchEvents.back().collisions.reserve(kBatchSize * kReservedImpactsPerBody);
+        m_batchEvents.back().restEvents.reserve(kBatchSize);
+    }
+    m_collisions.reserve(m_slots.size() * kReservedImpactsPerBody);
+    m_restEvents.reserve(m_slots.size());
     slot.body = makeBody(def);
     slot.body.ledger.initial = energyOf(slot.body);
     slot.alive = true;
@@ -244,30 +264,64 @@ ContactManifold World::contactsOf(BodyId id) const
     return manifold;
 }
 
+int World::threadCount() const
+{
+    if (m_settings.threads > 0) {
+        return m_settings.threads;
+    }
+    return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
 void World::step(Real dt)
 {
     TUMBLE_ASSERT(std::isfinite(dt) && dt > 0.0);
     m_collisions.clear();
     m_restEvents.clear();
     m_contactRecords.clear();
-    for (std::uint32_t index = 0; index < m_slots.size(); ++index) {
+    const auto batches = static_cast<std::ptrdiff_t>(m_batchEvents.size());
+#ifdef TUMBLE_HAVE_OPENMP
+    // Batches go to threads as they finish the previous one (bodies at rest cost nothing, so a
+    // static split would leave threads idle); each body is advanced alone, whichever thread
+    // takes it, so the results do not depend on the schedule.
+    const int threads = threadCount();
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads) if (threads > 1 && batches > 1)
+#endif
+    for (std::ptrdiff_t batch = 0; batch < batches; ++batch) {
+        advanceBatch(static_cast<std::size_t>(batch), dt);
+    }
+    for (const StepEvents& events : m_batchEvents) {
+        m_collisions.insert(m_collisions.end(), events.collisions.begin(), events.collisions.end());
+        m_restEvents.insert(m_restEvents.end(), events.restEvents.begin(), events.restEvents.end());
+        m_contactRecords.insert(m_contactRecords.end(), events.contactRecords.begin(),
+                                events.contactRecords.end());
+    }
+    m_time += dt;
+}
+
+void World::advanceBatch(std::size_t batch, Real dt)
+{
+    StepEvents& events = m_batchEvents[batch];
+    events.collisions.clear();
+    events.restEvents.clear();
+    events.contactRecords.clear();
+    const std::size_t end = std::min(m_slots.size(), (batch + 1) * kBatchSize);
+    for (std::size_t index = batch * kBatchSize; index < end; ++index) {
         Slot& slot = m_slots[index];
         if (!slot.alive || slot.body.asleep) {
             continue;
         }
         slot.body.ledger.impactWorkLastStep = 0.0;
-        const BodyId id{index, slot.generation};
+        const BodyId id{static_cast<std::uint32_t>(index), slot.generation};
         if (m_settings.response == ContactResponse::Average) {
-            advanceAverage(id, slot, dt);
+            advanceAverage(id, slot, dt, events);
         } else {
-            advanceSequential(id, slot, dt);
+            advanceSequential(id, slot, dt, events);
         }
-        updateRest(id, slot, dt);
+        updateRest(id, slot, dt, events);
     }
-    m_time += dt;
 }
 
-void World::advanceSequential(BodyId id, Slot& slot, Real dt)
+void World::advanceSequential(BodyId id, Slot& slot, Real dt, StepEvents& events)
 {
     Body& body = slot.body;
     const ContactSolveSettings solveSettings{m_settings.restitutionThreshold,
@@ -285,8 +339,8 @@ void World::advanceSequential(BodyId id, Slot& slot, Real dt)
                 const Real energyBefore = energyOf(body);
                 const ImpactOutcome outcome = resolveImpact(body, contacts, solveSettings);
                 bookContact(body, outcome.work, energyOf(body) - energyBefore, true);
-                recordImpact(contacts, outcome, m_time + elapsed);
-                recordContacts(ContactPhase::Impact, contacts, m_time + elapsed);
+                recordImpact(contacts, outcome, m_time + elapsed, events);
+                recordContacts(ContactPhase::Impact, contacts, m_time + elapsed, events);
                 const Real energyBeforeSettling = energyOf(body);
                 settleOnPlane(body, contacts);
                 bookCorrection(body, energyBeforeSettling);
@@ -317,7 +371,7 @@ void World::advanceSequential(BodyId id, Slot& slot, Real dt)
             restingWork = integrateVelocities(body, contacts, tau, slot.warmStart);
         }
         slot.warmStart = makeWarmStart(contacts, tau);
-        recordContacts(ContactPhase::Resting, contacts, m_time + elapsed);
+        recordContacts(ContactPhase::Resting, contacts, m_time + elapsed, events);
         // 5. Integrate positions and orientation.
         integratePositions(body, positionStartVelocity(velocityStart, body, contacts), tau);
         bookContact(body, restingWork, energyOf(body) - energyStart, false);
@@ -336,7 +390,7 @@ void World::advanceSequential(BodyId id, Slot& slot, Real dt)
     slot.touchingGround = contactsOf(id).pointCount > 0;
 }
 
-void World::advanceAverage(BodyId id, Slot& slot, Real dt)
+void World::advanceAverage(BodyId id, Slot& slot, Real dt, StepEvents& events)
 {
     Body& body = slot.body;
     // The handouts' order: move freely for the whole step, then detect and respond.
@@ -364,13 +418,13 @@ void World::advanceAverage(BodyId id, Slot& slot, Real dt)
     const Real energyBeforeImpulse = energyOf(body);
     const ImpactOutcome outcome = resolveAverageContact(body, contacts, solveSettings);
     bookContact(body, outcome.work, energyOf(body) - energyBeforeImpulse, true);
-    recordContacts(ContactPhase::Average, contacts, m_time + dt);
+    recordContacts(ContactPhase::Average, contacts, m_time + dt, events);
     // A resting body gains |g| dt of approach every step; only a real impact is reported.
     const Real restingApproach = glm::length(m_settings.gravity) * dt;
     if (outcome.approachSpeed > 0.0 &&
         (!wasTouching ||
          outcome.approachSpeed > m_settings.restitutionThreshold + restingApproach)) {
-        recordImpact(contacts, outcome, m_time + dt);
+        recordImpact(contacts, outcome, m_time + dt, events);
     }
 }
 
@@ -405,10 +459,11 @@ void World::bookCorrection(Body& body, Real energyBefore) const
     body.ledger.removedByCorrection += energyBefore - energyOf(body);
 }
 
-void World::recordContacts(ContactPhase phase, const ContactManifold& contacts, Real time)
+void World::recordContacts(ContactPhase phase, const ContactManifold& contacts, Real time,
+                           StepEvents& events) const
 {
     if (m_settings.recordContacts && contacts.pointCount > 0) {
-        m_contactRecords.push_back(
+        events.contactRecords.push_back(
             ContactRecord{time, phase, body(contacts.body).position, contacts});
     }
 }
@@ -495,7 +550,8 @@ void World::correctPenetration(Body& body) const
     }
 }
 
-void World::recordImpact(const ContactManifold& contacts, const ImpactOutcome& outcome, Real time)
+void World::recordImpact(const ContactManifold& contacts, const ImpactOutcome& outcome, Real time,
+                         StepEvents& events)
 {
     CollisionEvent event;
     event.time = time;
@@ -506,10 +562,10 @@ void World::recordImpact(const ContactManifold& contacts, const ImpactOutcome& o
     event.restitutionApplied = outcome.restitutionApplied;
     event.kineticEnergyBefore = outcome.kineticEnergyBefore;
     event.kineticEnergyAfter = outcome.kineticEnergyAfter;
-    m_collisions.push_back(event);
+    events.collisions.push_back(event);
 }
 
-void World::updateRest(BodyId id, Slot& slot, Real dt)
+void World::updateRest(BodyId id, Slot& slot, Real dt, StepEvents& events) const
 {
     Body& body = slot.body;
     const bool slow = slot.touchingGround &&
@@ -524,7 +580,7 @@ void World::updateRest(BodyId id, Slot& slot, Real dt)
         return;
     }
     // The body has just stayed slow for sleepTime: it is at rest since it became slow.
-    m_restEvents.push_back(
+    events.restEvents.push_back(
         RestEvent{id, slot.slowSince, faceAlong(body.orientation, -Plane::normal())});
     if (m_settings.allowSleep) {
         body.ledger.removedByRest += body.kineticEnergy();

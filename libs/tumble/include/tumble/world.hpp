@@ -66,6 +66,11 @@ struct WorldSettings {
     /// Whether step() keeps a ContactRecord of every contact solve (the contact ledger).
     /// Default false.
     bool recordContacts = false;
+    /// Threads step() spreads the bodies over (1: the calling thread only; 0: one per core).
+    /// Bodies touch only the ground, never each other, so each is advanced on its own and the
+    /// results are identical whatever the number (docs/architecture.md, "Many bodies").
+    /// Default 1.
+    int threads = 1;
 };
 
 /// A body that has just come to rest.
@@ -86,6 +91,10 @@ public:
     void setGravity(const Vec3& gravity);
     void setIntegrator(Integrator integrator) { m_settings.integrator = integrator; }
     void setResponse(ContactResponse response) { m_settings.response = response; }
+    /// See WorldSettings::threads (0: one per core).
+    void setThreads(int threads) { m_settings.threads = threads; }
+    /// The number of threads step() uses: WorldSettings::threads, or the cores when it is 0.
+    [[nodiscard]] int threadCount() const;
 
     /// The ground plane, or none.
     [[nodiscard]] const std::optional<Plane>& ground() const { return m_ground; }
@@ -112,7 +121,9 @@ public:
     /// from the centre of mass (docs/physics/03-impulses.md). Wakes the body.
     void applyImpulse(BodyId id, const Vec3& impulse, const Vec3& worldPoint);
 
-    /// Advances every awake body by dt seconds (dt > 0).
+    /// Advances every awake body by dt seconds (dt > 0). Allocates nothing once the event
+    /// buffers hold a step's events (they are reserved as bodies are created; recording contacts
+    /// and more than two impacts of each body in one step may grow them).
     void step(Real dt);
     /// Simulated time, s: the sum of the dt of every step.
     [[nodiscard]] Real time() const { return m_time; }
@@ -144,16 +155,26 @@ private:
         WarmStartCache warmStart{};
     };
 
+    /// What the bodies of one batch report during a step, merged into the world's lists in
+    /// batch order afterwards, so the order never depends on which thread ran which batch.
+    struct StepEvents {
+        std::vector<CollisionEvent> collisions;
+        std::vector<RestEvent> restEvents;
+        std::vector<ContactRecord> contactRecords;
+    };
+
     Body& mutableBody(BodyId id);
     static void wake(Body& body);
-    void advanceSequential(BodyId id, Slot& slot, Real dt);
-    void advanceAverage(BodyId id, Slot& slot, Real dt);
+    void advanceBatch(std::size_t batch, Real dt);
+    void advanceSequential(BodyId id, Slot& slot, Real dt, StepEvents& events);
+    void advanceAverage(BodyId id, Slot& slot, Real dt, StepEvents& events);
     [[nodiscard]] Real impactTolerance() const;
     [[nodiscard]] ContactWork integrateVelocities(Body& body, ContactManifold& contacts, Real tau,
                                                   const WarmStartCache& warmStart) const;
     void bookContact(Body& body, const ContactWork& work, Real energyChange, bool impact) const;
     void bookCorrection(Body& body, Real energyBefore) const;
-    void recordContacts(ContactPhase phase, const ContactManifold& contacts, Real time);
+    void recordContacts(ContactPhase phase, const ContactManifold& contacts, Real time,
+                        StepEvents& events) const;
     /// The start velocity the position update uses (docs/physics/02-integration.md, (2.2a)).
     [[nodiscard]] static Vec3 positionStartVelocity(const Vec3& velocityStart, const Body& body,
                                                     const ContactManifold& contacts);
@@ -165,8 +186,9 @@ private:
     /// Runs `change` on a body and books the energy it adds as added by the user.
     template <typename Change>
     void editBody(BodyId id, Change change);
-    void recordImpact(const ContactManifold& contacts, const ImpactOutcome& outcome, Real time);
-    void updateRest(BodyId id, Slot& slot, Real dt);
+    static void recordImpact(const ContactManifold& contacts, const ImpactOutcome& outcome,
+                             Real time, StepEvents& events);
+    void updateRest(BodyId id, Slot& slot, Real dt, StepEvents& events) const;
 
     WorldSettings m_settings;
     std::optional<Plane> m_ground;
@@ -176,6 +198,8 @@ private:
     std::vector<CollisionEvent> m_collisions;
     std::vector<RestEvent> m_restEvents;
     std::vector<ContactRecord> m_contactRecords;
+    /// One per batch of kBatchSize slots.
+    std::vector<StepEvents> m_batchEvents;
 };
 
 } // namespace tumble
