@@ -4,6 +4,7 @@
 
 #include "overrides.hpp"
 #include "read_entries.hpp"
+#include "read_throw.hpp"
 #include "schema.hpp"
 #include "toml_reader.hpp"
 
@@ -111,6 +112,7 @@ Scenario readScenario(const TomlReader& reader, const toml::table& root)
     });
     detail::readBodies(reader, root, scenario);
     detail::readImpulses(reader, root, scenario);
+    detail::readThrow(reader, root, scenario);
     return scenario;
 }
 

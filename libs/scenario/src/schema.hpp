@@ -6,8 +6,8 @@
 
 namespace tumble::scenario::detail {
 
-inline constexpr std::array<std::string_view, 4> kTopLevelKeys{
-    "world", "ground", "body", "impulse"};
+inline constexpr std::array<std::string_view, 5> kTopLevelKeys{
+    "world", "ground", "body", "impulse", "throw"};
 
 inline constexpr std::array<std::string_view, 12> kWorldKeys{
     "gravity", "dt", "duration", "integrator", "response", "contact_tolerance",
@@ -23,10 +23,15 @@ inline constexpr std::array<std::string_view, 11> kBodyKeys{
 inline constexpr std::array<std::string_view, 6> kImpulseKeys{
     "at", "body", "impulse", "offset", "velocity", "angular_velocity"};
 
+inline constexpr std::array<std::string_view, 6> kThrowKeys{
+    "height", "speed", "vertical_speed", "angular_speed", "orientation", "max_time"};
+
 inline constexpr std::array<std::string_view, 2> kAxisAngleKeys{"axis", "degrees"};
 
 /// Values of world.integrator and world.response, in the order of the library's enumerators.
 inline constexpr std::array<std::string_view, 2> kIntegratorNames{"exact", "handout"};
 inline constexpr std::array<std::string_view, 2> kResponseNames{"sequential", "average"};
+/// Values of throw.orientation, in the order of ThrowOrientation's enumerators.
+inline constexpr std::array<std::string_view, 2> kThrowOrientationNames{"random", "body"};
 
 } // namespace tumble::scenario::detail
