@@ -68,7 +68,8 @@ void printHeader(const ThrowOptions& options, const scenario::Scenario& loaded, 
 {
     const BodyDef& die = loaded.bodies.front().def;
     std::cout << "scenario: " << options.file << '\n'
-              << "die " << loaded.bodies.front().name << ": size = " << formatVec3(die.shape.size)
+              << "die (body " << loaded.bodies.front().name
+              << "): size = " << formatVec3(die.shape.size)
               << " m, mass = " << formatFixed(die.mass)
               << " kg, elasticity = " << formatFixed(die.material.restitution)
               << ", friction = " << formatFixed(die.material.friction) << '\n'
