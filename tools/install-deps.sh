@@ -14,6 +14,11 @@ packages=(
     pkg-config
     # tumble plot and tumble validate --plot draw their PNG files with gnuplot
     gnuplot-nox
+    # tumble throw: Boost.Math's chi-square and normal distributions (header-only), and MPI
+    # (mpirun -n P tumble throw; its CLI test runs mpirun); OpenMP comes with g++
+    libboost-dev
+    libopenmpi-dev
+    openmpi-bin
     # tools/ci-fuzz.sh: clang with libFuzzer and the sanitizer runtimes; llvm-symbolizer
     clang
     libclang-rt-dev

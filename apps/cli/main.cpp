@@ -3,6 +3,7 @@
 #include "console.hpp"
 #include "plot_command.hpp"
 #include "run_command.hpp"
+#include "throw_command.hpp"
 #include "validate_command.hpp"
 #include "view_command.hpp"
 
@@ -21,6 +22,8 @@ int main(int argc, char** argv)
     const CLI::App* validate = tumble::cli::addValidateCommand(app, validateOptions);
     tumble::cli::PlotOptions plotOptions;
     const CLI::App* plot = tumble::cli::addPlotCommand(app, plotOptions);
+    tumble::cli::ThrowOptions throwOptions;
+    const CLI::App* throwDice = tumble::cli::addThrowCommand(app, throwOptions);
     tumble::cli::ViewOptions viewOptions;
     const CLI::App* view = tumble::cli::addViewCommand(app, viewOptions);
 
@@ -35,6 +38,9 @@ int main(int argc, char** argv)
     return tumble::cli::runReportingErrors([&] {
         if (*run) {
             return tumble::cli::runCommand(runOptions);
+        }
+        if (*throwDice) {
+            return tumble::cli::throwCommand(throwOptions);
         }
         if (*validate) {
             return tumble::cli::validateCommand(validateOptions);

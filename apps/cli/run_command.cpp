@@ -19,16 +19,6 @@
 namespace tumble::cli {
 namespace {
 
-/// Slack when counting steps, so a duration that is a whole number of steps up to rounding
-/// (10 / (1/240) = 2400.0000000004) does not get one step more.
-constexpr Real kStepCountSlack = 1e-6;
-
-/// Number of fixed steps after which time() >= duration.
-long long stepsFor(Real duration, Real dt)
-{
-    return static_cast<long long>(std::ceil(duration / dt - kStepCountSlack));
-}
-
 /// Index of the first body whose state is not finite, if any.
 std::optional<std::size_t> firstNonFiniteBody(const scenario::Runner& runner)
 {
@@ -128,7 +118,7 @@ int runCommand(const RunOptions& options)
         contactsCsv.emplace(options.contactsCsvPath);
     }
 
-    const long long stepCount = stepsFor(loaded.duration, loaded.dt);
+    const long long stepCount = scenario::stepCountFor(loaded.duration, loaded.dt);
     console.printHeader(runner, stepCount);
     if (csv) {
         csv->writeSample(runner);

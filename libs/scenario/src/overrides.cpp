@@ -18,7 +18,7 @@ namespace tumble::scenario::detail {
 namespace {
 
 constexpr std::string_view kTargetsHint =
-    "world.<key>, ground.height, <body name>.<key>, impulse[<index>].<key> or "
+    "world.<key>, ground.height, throw.<key>, <body name>.<key>, impulse[<index>].<key> or "
     "spawn[<index>].<key>";
 
 [[noreturn]] void failOverride(const std::string& key, const std::string& problem)
@@ -138,6 +138,9 @@ Target findTarget(toml::table& root, std::string_view section, const std::string
     }
     if (section == "ground") {
         return Target{&tableOrCreate(root, "ground", key), "ground", kGroundKeys};
+    }
+    if (section == "throw") {
+        return Target{&tableOrCreate(root, "throw", key), "throw", kThrowKeys};
     }
     if (const std::optional<std::size_t> index = parseIndex(section, "impulse")) {
         return indexedTarget(root, "impulse", *index, kImpulseKeys, key);

@@ -3,11 +3,15 @@
 #include "tumble/impulse_target.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
 namespace tumble::scenario {
 namespace {
+
+/// Steps of slack when counting steps for a duration (see stepCountFor).
+constexpr Real kStepCountSlack = 1e-6;
 
 /// Impulse times this close to a step boundary (as a fraction of dt) count as on the boundary,
 /// so an `at` that is a multiple of dt does not split a step into a sliver and the rest.
@@ -32,6 +36,16 @@ std::size_t bodyIndexByName(const Scenario& scenario, const ImpulseSpec& spec)
 }
 
 } // namespace
+
+long long stepCountFor(Real duration, Real dt)
+{
+    return static_cast<long long>(std::ceil(duration / dt - kStepCountSlack));
+}
+
+Real fixedStepLength(long long stepIndex, Real dt)
+{
+    return static_cast<Real>(stepIndex + 1) * dt - static_cast<Real>(stepIndex) * dt;
+}
 
 Runner::Runner(const Scenario& scenario) : m_scenario(scenario), m_built(buildWorld(m_scenario)) {}
 

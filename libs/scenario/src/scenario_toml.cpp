@@ -4,6 +4,7 @@
 
 #include "overrides.hpp"
 #include "read_entries.hpp"
+#include "read_throw.hpp"
 #include "schema.hpp"
 #include "toml_reader.hpp"
 
@@ -118,6 +119,7 @@ Scenario readScenario(const TomlReader& reader, const toml::table& root)
                             "body", "a scenario needs at least one [[body]] or [[spawn]]");
     }
     detail::readImpulses(reader, root, scenario);
+    detail::readThrow(reader, root, scenario);
     return scenario;
 }
 

@@ -6,8 +6,8 @@
 
 namespace tumble::scenario::detail {
 
-inline constexpr std::array<std::string_view, 5> kTopLevelKeys{
-    "world", "ground", "body", "impulse", "spawn"};
+inline constexpr std::array<std::string_view, 6> kTopLevelKeys{
+    "world", "ground", "body", "impulse", "spawn", "throw"};
 
 inline constexpr std::array<std::string_view, 12> kWorldKeys{
     "gravity", "dt", "duration", "integrator", "response", "contact_tolerance",
@@ -26,11 +26,15 @@ inline constexpr std::array<std::string_view, 6> kImpulseKeys{
 inline constexpr std::array<std::string_view, 12> kSpawnKeys{
     "count", "seed", "spacing", "size", "mass", "height", "orientation", "angular_speed",
     "velocity", "elasticity", "friction", "static_friction"};
+inline constexpr std::array<std::string_view, 6> kThrowKeys{
+    "height", "speed", "vertical_speed", "angular_speed", "orientation", "max_time"};
 
 inline constexpr std::array<std::string_view, 2> kAxisAngleKeys{"axis", "degrees"};
 
 /// Values of world.integrator and world.response, in the order of the library's enumerators.
 inline constexpr std::array<std::string_view, 2> kIntegratorNames{"exact", "handout"};
 inline constexpr std::array<std::string_view, 2> kResponseNames{"sequential", "average"};
+/// Values of throw.orientation, in the order of ThrowOrientation's enumerators.
+inline constexpr std::array<std::string_view, 2> kThrowOrientationNames{"random", "body"};
 
 } // namespace tumble::scenario::detail

@@ -5,6 +5,8 @@
 #include "messages.hpp"
 #include "schema.hpp"
 
+#include "tumble/scenario/throw.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -248,7 +250,8 @@ Quat TomlReader::orientation(const toml::node& node, const std::string& key) con
                      " (w, x, y, z must have length 1 within 1e-6; or give { axis = [x, y, z], "
                      "degrees = a })");
         }
-        return q / length;
+        // the same function runThrow applies, so a replayed throw starts where the throw did
+        return normalizedOrientation(q);
     }
     if (const toml::table* angle = node.as_table()) {
         checkKeys(*angle, key, kAxisAngleKeys);

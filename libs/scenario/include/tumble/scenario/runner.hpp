@@ -34,6 +34,16 @@ struct StepReport {
     std::vector<RestEvent> restEvents;
 };
 
+/// Number of fixed steps of length dt after which a run has reached `duration`: ceil(duration /
+/// dt) less a slack of 1e-6 steps, so a duration that is a whole number of steps up to rounding
+/// (10 / (1/240) = 2400.0000000004) does not get one step more.
+long long stepCountFor(Real duration, Real dt);
+
+/// The length of fixed step `stepIndex` (0-based) that Runner::step gives World::step when no
+/// impulse splits it: (stepIndex + 1) dt - stepIndex dt, which differs from dt in the last bits.
+/// Anything that must reproduce a run bit for bit steps with these lengths.
+Real fixedStepLength(long long stepIndex, Real dt);
+
 /// Owns the World built from a scenario and advances it one fixed step at a time. An impulse
 /// whose time falls inside a step splits that step, so it acts at exactly its `at`.
 class Runner {

@@ -3,6 +3,7 @@
 
 #include "tumble/body_id.hpp"
 #include "tumble/math.hpp"
+#include "tumble/scenario/throw_spec.hpp"
 #include "tumble/shape.hpp"
 #include "tumble/world.hpp"
 
@@ -108,6 +109,9 @@ struct Scenario {
     std::vector<SpawnSpec> spawns;
     /// Sorted by `at` (stable, so entries at the same time keep file order).
     std::vector<ImpulseSpec> impulses;
+    /// The [throw] table of a dice scenario (`tumble throw`); none when the file has none.
+    /// `tumble run` ignores it and runs the body as the file gives it.
+    std::optional<ThrowSpec> throwSpec;
 };
 
 /// Reads and validates a scenario file. `overrides` are "KEY=VALUE" strings (`world.dt=0.001`,

@@ -1,0 +1,30 @@
+// Running a block of throws on K threads (OpenMP, a fixed chunking) with an optional progress bar;
+// each throw depends only on (seed, index), so the outcomes do not depend on K.
+#pragma once
+
+#include "tumble/scenario/scenario.hpp"
+#include "tumble/scenario/throw.hpp"
+
+#include <cstdint>
+#include <span>
+
+namespace tumble::cli {
+
+/// Throws handed to a thread at a time, in round robin: fixed, so the split does not depend on
+/// timing (the outcomes would not anyway).
+constexpr int kThrowsPerChunk = 16;
+
+/// Threads to use when --threads is not given: every core OpenMP sees (1 without OpenMP).
+int defaultThreadCount();
+/// Whether this build runs throws in parallel (OpenMP was found).
+bool parallelBuild();
+
+/// Runs throws firstIndex .. firstIndex + outcomes.size() - 1 into `outcomes` on `threads`
+/// threads. With `progress`, draws a bar on stderr (throws done, throws/s, time left), scaled to
+/// `totalThrows` when this is one of several equal blocks (MPI ranks). Stops early, leaving the
+/// rest unsettled, when SIGINT or SIGTERM arrives; returns the number of throws run.
+std::int64_t runThrows(const scenario::Scenario& scenario, std::uint64_t seed,
+                       std::int64_t firstIndex, std::span<scenario::ThrowOutcome> outcomes,
+                       int threads, bool progress, std::int64_t totalThrows);
+
+} // namespace tumble::cli
