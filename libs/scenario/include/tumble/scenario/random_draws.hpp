@@ -20,7 +20,8 @@ public:
     Real unit() { return static_cast<Real>(m_engine() >> 11) * 0x1.0p-53; }
     /// Uniform in [low, high] (exactly low when low == high).
     Real uniform(Real low, Real high) { return low + (high - low) * unit(); }
-    /// A unit vector uniform on the sphere (Archimedes: z uniform in [-1, 1], azimuth uniform).
+    /// A unit vector uniform on the sphere (Archimedes: the y component uniform in [-1, 1], the
+    /// azimuth about y uniform): (sqrt(1 - y^2) cos a, y, sqrt(1 - y^2) sin a).
     Vec3 direction();
     /// A rotation uniform on SO(3) (Shoemake 1992, "Uniform random rotations", Graphics Gems
     /// III): three uniform numbers give a unit quaternion uniform on the 3-sphere.
