@@ -166,6 +166,11 @@ private:
     Body& mutableBody(BodyId id);
     static void wake(Body& body);
     void advanceBatch(std::size_t batch, Real dt);
+    /// True when no vertex can come within the contact tolerance of the ground during a step
+    /// of dt, whatever the body's rotation (or when there is no ground).
+    [[nodiscard]] bool clearOfGroundForStep(const Body& body, Real dt) const;
+    /// The sequential step of a body clear of the ground: gravity and integration only.
+    void advanceInFlight(Slot& slot, Real dt) const;
     void advanceSequential(BodyId id, Slot& slot, Real dt, StepEvents& events);
     void advanceAverage(BodyId id, Slot& slot, Real dt, StepEvents& events);
     [[nodiscard]] Real impactTolerance() const;
