@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # Builds the tumble program twice with the same compiler, -O0 (Debug) and -O2, both with
 # -ffp-contract=off (cmake/TumbleWarnings.cmake), and compares `tumble run --hash` on every
-# scenario: the results must be bit-identical (issue 6, docs/robustness.md).
+# scenario: the results must be bit-identical (issue 6, docs/robustness.md). Every scenario also
+# runs on 1 and on 2 threads, which must agree bit for bit too.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 bash tools/install-deps.sh
-common=(-G Ninja -DTUMBLE_BUILD_TESTS=OFF -DTUMBLE_BUILD_VIEWER=OFF)
+common=(-G Ninja -DTUMBLE_BUILD_TESTS=OFF -DTUMBLE_BUILD_VIEWER=OFF -DTUMBLE_BUILD_PEERS=OFF
+    -DTUMBLE_BUILD_BENCH=OFF)
 cmake -S . -B build-o0 "${common[@]}" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O0 -g"
 cmake -S . -B build-o2 "${common[@]}" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O2 -DNDEBUG"
 cmake --build build-o0 --target tumble_cli
@@ -15,14 +17,15 @@ cmake --build build-o2 --target tumble_cli
 status=0
 count=0
 for scenario in scenarios/*.toml; do
-    o0=$(build-o0/apps/cli/tumble run "$scenario" --quiet --hash | grep '^state hash: ')
-    o2=$(build-o2/apps/cli/tumble run "$scenario" --quiet --hash | grep '^state hash: ')
+    o0=$(build-o0/apps/cli/tumble run "$scenario" --quiet --hash --threads 1 | grep '^state hash: ')
+    o2=$(build-o2/apps/cli/tumble run "$scenario" --quiet --hash --threads 1 | grep '^state hash: ')
+    o2t2=$(build-o2/apps/cli/tumble run "$scenario" --quiet --hash --threads 2 | grep '^state hash: ')
     count=$((count + 1))
-    if [[ "$o0" != "$o2" ]]; then
-        echo "ci-determinism: $scenario differs: -O0 $o0, -O2 $o2" >&2
+    if [[ "$o0" != "$o2" || "$o2" != "$o2t2" ]]; then
+        echo "ci-determinism: $scenario differs: -O0 $o0, -O2 $o2, -O2 on 2 threads $o2t2" >&2
         status=1
     else
-        echo "ci-determinism: $scenario: ${o0#state hash: } with -O0 and -O2"
+        echo "ci-determinism: $scenario: ${o0#state hash: } with -O0, -O2, and -O2 on 2 threads"
     fi
 done
 echo "ci-determinism: $count scenarios compared"

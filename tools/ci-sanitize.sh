@@ -7,9 +7,11 @@ cd "$(dirname "$0")/.."
 bash tools/install-deps.sh
 # The viewer needs a display and its own libraries; it is not what the sanitizers are for here.
 # MPI is left out too: Open MPI keeps allocations to the end of the process, which
-# LeakSanitizer would report against the mpirun test of tumble throw.
+# LeakSanitizer would report against the mpirun test of tumble throw. The peer engines of
+# tumble bench are other projects' code, built and run by tools/run-tests.sh.
 cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Debug -DTUMBLE_SANITIZE=ON \
-    -DTUMBLE_WARNINGS_AS_ERRORS=ON -DTUMBLE_BUILD_VIEWER=OFF -DTUMBLE_BUILD_MPI=OFF
+    -DTUMBLE_WARNINGS_AS_ERRORS=ON -DTUMBLE_BUILD_VIEWER=OFF -DTUMBLE_BUILD_MPI=OFF \
+    -DTUMBLE_BUILD_PEERS=OFF
 cmake --build build-asan
 # halt_on_error: a UBSan report aborts the test (by default UBSan only prints and goes on).
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:halt_on_error=1:strict_string_checks=1"

@@ -11,6 +11,12 @@ packages=(
     libtomlplusplus-dev
     libgtest-dev
     libgmock-dev
+    # bench/: Google Benchmark micro benchmarks, and the peer engines of tumble bench --peers
+    # (each optional in CMake; installed here so CI builds and runs them)
+    libbenchmark-dev
+    libbullet-dev
+    libode-dev
+    libmujoco-dev
     pkg-config
     # tumble plot and tumble validate --plot draw their PNG files with gnuplot
     gnuplot-nox

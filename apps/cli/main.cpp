@@ -1,4 +1,5 @@
 // tumble: the command-line program. Declares the commands; each lives in its own file.
+#include "bench_command.hpp"
 #include "check_command.hpp"
 #include "console.hpp"
 #include "plot_command.hpp"
@@ -24,6 +25,8 @@ int main(int argc, char** argv)
     const CLI::App* plot = tumble::cli::addPlotCommand(app, plotOptions);
     tumble::cli::ThrowOptions throwOptions;
     const CLI::App* throwDice = tumble::cli::addThrowCommand(app, throwOptions);
+    tumble::cli::BenchOptions benchOptions;
+    const CLI::App* bench = tumble::cli::addBenchCommand(app, benchOptions);
     tumble::cli::ViewOptions viewOptions;
     const CLI::App* view = tumble::cli::addViewCommand(app, viewOptions);
 
@@ -47,6 +50,9 @@ int main(int argc, char** argv)
         }
         if (*plot) {
             return tumble::cli::plotCommand(plotOptions);
+        }
+        if (*bench) {
+            return tumble::cli::benchCommand(benchOptions);
         }
         if (*view) {
             return tumble::cli::viewCommand(viewOptions);

@@ -1,0 +1,27 @@
+#pragma once
+
+// Shared between peer.cpp and the per-engine sources; not part of the public interface.
+
+#include "peer.hpp"
+
+#include <string>
+
+namespace tumble::bench::detail {
+
+/// Bytes of heap in use by the whole process (glibc mallinfo2: uordblks + hblkhd), 0 elsewhere.
+long long heapInUse();
+
+#ifdef TUMBLE_PEER_BULLET
+std::string bulletName();
+PeerResult runBullet(const PeerScene& scene);
+#endif
+#ifdef TUMBLE_PEER_ODE
+std::string odeName();
+PeerResult runOde(const PeerScene& scene);
+#endif
+#ifdef TUMBLE_PEER_MUJOCO
+std::string mujocoName();
+PeerResult runMujoco(const PeerScene& scene);
+#endif
+
+} // namespace tumble::bench::detail
