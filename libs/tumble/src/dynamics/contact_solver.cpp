@@ -2,6 +2,7 @@
 #include "dynamics/contact_solver.hpp"
 
 #include "body_state.hpp"
+#include "tumble_assert.hpp"
 
 #include <algorithm>
 #include <array>
@@ -296,6 +297,8 @@ ContactWork solveRestingContact(Body& body, ContactManifold& manifold,
                                 const ContactSolveSettings& settings,
                                 const WarmStartCache& warmStart)
 {
+    // (5.9) divides by tau: a sub-step has positive length.
+    TUMBLE_ASSERT(tau > 0.0);
     // Prepared before gravity acts, so a body at rest on a slope sees no sliding and keeps the
     // static coefficient.
     PreparedSolve solve = prepare(body, manifold, 0.0, settings.restitutionThreshold);
