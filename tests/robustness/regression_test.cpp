@@ -93,6 +93,30 @@ TEST(Regression, ALightStickRockingUnderTheHandoutIntegratorStaysFinite)
     EXPECT_TRUE(outcome.penetrationBounded());
 }
 
+// Found by world_step_fuzzer (tests/fuzz/regressions/world_step/plate_on_edge_solver_cap): a
+// heavy 0.27 x 0.27 x 0.001 m plate standing on an edge with friction 5. Its 1 mm wide patch made
+// Gauss-Seidel converge so slowly that 256 sweeps left corners approaching at 1e-5 m/s; they sank
+// and the push-out (4.5) added 1.3e-5 of the energy scale in 50 steps. A solve that reaches the
+// cap now ends with the exact normal impulses (05-normal-impulse.md, (5.11)).
+TEST(Regression, APlateStandingOnItsEdgeGainsNoEnergy)
+{
+    DropCase drop;
+    drop.mass = 4944.4460754618676;
+    drop.size = Vec3(0.26620924722636491, 0.26623191587757494, 0.001003993048226372);
+    drop.orientation = Quat(0.5, 0.5, 0.5, 0.5);
+    drop.dt = 0.010944997993195428;
+    drop.height = 3.9381243042291276e-10;
+    drop.velocity = Vec3(-0.00057735026919321082, -0.00057735026919337974,
+                         -0.00057735026919316973);
+    drop.restitution = 0.0;
+    drop.friction = 5.0;
+    drop.steps = 50;
+    const DropOutcome outcome = runDrop(drop);
+    EXPECT_TRUE(outcome.finite);
+    EXPECT_TRUE(outcome.penetrationBounded());
+    EXPECT_LE(outcome.maxRelativeEnergyGain, kEnergyTolerance);
+}
+
 TEST(Regression, AStepWithANonFiniteStateEnds)
 {
     World world;
