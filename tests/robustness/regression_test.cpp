@@ -68,6 +68,55 @@ TEST(Regression, ASubnormalFrictionCoefficientIsNoFrictionNotNaN)
     EXPECT_GT(outcome.impacts, 0);
 }
 
+// Found by world_step_fuzzer (tests/fuzz/regressions/world_step/handout_stick_zero_substep): a
+// light 1000 m stick rocking on the ground with the handout integrator at dt = 0.1 s. The world
+// left a vertex just above the impact tolerance to the time of impact, whose pose at s = 0 was
+// the start pose rounded by the handout rotation (Gram-Schmidt), 3e-14 m lower 500 m out: it
+// returned s = 0, and the zero-length sub-step divided by zero in (5.9), making the state NaN.
+TEST(Regression, ALightStickRockingUnderTheHandoutIntegratorStaysFinite)
+{
+    DropCase drop;
+    drop.mass = 1.0000000000000004e-06;
+    drop.size = Vec3(999.99999999999795, 0.99999999999999911, 0.99999999999999911);
+    drop.orientation = Quat(-0.089233959135939789, -0.24795497615194984, 0.77018987765111113,
+                            -0.58082973641350166);
+    drop.dt = 0.099999999999999895;
+    drop.height = 3.0771719819486979e-06;
+    drop.velocity = Vec3(-5.4960415188229102e-05, -0.0014058585582373867, 0.0010498162041319566);
+    drop.restitution = 0.0;
+    drop.friction = 0.0;
+    drop.integrator = Integrator::Handout;
+    drop.steps = 299;
+    const DropOutcome outcome = runDrop(drop);
+    EXPECT_TRUE(outcome.finite) << "non-finite after step " << outcome.steps;
+    EXPECT_TRUE(outcome.quaternionUnit());
+    EXPECT_TRUE(outcome.penetrationBounded());
+}
+
+// Found by world_step_fuzzer (tests/fuzz/regressions/world_step/plate_on_edge_solver_cap): a
+// heavy 0.27 x 0.27 x 0.001 m plate standing on an edge with friction 5. Its 1 mm wide patch made
+// Gauss-Seidel converge so slowly that 256 sweeps left corners approaching at 1e-5 m/s; they sank
+// and the push-out (4.5) added 1.3e-5 of the energy scale in 50 steps. A solve that reaches the
+// cap now ends with the exact normal impulses (05-normal-impulse.md, (5.11)).
+TEST(Regression, APlateStandingOnItsEdgeGainsNoEnergy)
+{
+    DropCase drop;
+    drop.mass = 4944.4460754618676;
+    drop.size = Vec3(0.26620924722636491, 0.26623191587757494, 0.001003993048226372);
+    drop.orientation = Quat(0.5, 0.5, 0.5, 0.5);
+    drop.dt = 0.010944997993195428;
+    drop.height = 3.9381243042291276e-10;
+    drop.velocity = Vec3(-0.00057735026919321082, -0.00057735026919337974,
+                         -0.00057735026919316973);
+    drop.restitution = 0.0;
+    drop.friction = 5.0;
+    drop.steps = 50;
+    const DropOutcome outcome = runDrop(drop);
+    EXPECT_TRUE(outcome.finite);
+    EXPECT_TRUE(outcome.penetrationBounded());
+    EXPECT_LE(outcome.maxRelativeEnergyGain, kEnergyTolerance);
+}
+
 TEST(Regression, AStepWithANonFiniteStateEnds)
 {
     World world;

@@ -433,6 +433,11 @@ void World::advanceSequential(BodyId id, Slot& slot, Real dt, StepEvents& events
             break;
         }
         elapsed += tau;
+        // elapsed + tau can round up to dt when tau falls short of the remaining time by less
+        // than an ulp: the step is then complete, and another sub-step would have length zero.
+        if (!(elapsed < dt)) {
+            break;
+        }
     }
     slot.touchingGround = contactsOf(id).pointCount > 0;
 }

@@ -2,6 +2,8 @@
 #include "dynamics/contact_solver.hpp"
 
 #include "body_state.hpp"
+#include "dynamics/normal_impulses.hpp"
+#include "tumble_assert.hpp"
 
 #include <algorithm>
 #include <array>
@@ -154,9 +156,56 @@ void solveFriction(const SolverPoint& point, Real v1, Real v2, Real& impulse1, R
     impulse2 *= scale;
 }
 
+/// (5.11): replaces the normal impulses by the exact solution of the normal problem with the
+/// friction impulses held, for a solve that ran out of sweeps.
+void solveNormalExactly(Body& body, const SolverFrame& frame, std::span<SolverPoint> points,
+                        Real targetScale)
+{
+    std::array<Vec3, 8> offsets{};
+    std::array<Real, 8> freeVelocities{};
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        SolverPoint& point = points[i];
+        applyImpulseAtOffset(body, -point.normalImpulse * frame.n, point.r);
+        point.normalImpulse = 0.0;
+        offsets[i] = point.r;
+    }
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const Vec3 velocity = body.linearVelocity + glm::cross(body.angularVelocity, points[i].r);
+        freeVelocities[i] =
+            glm::dot(frame.n, velocity) - targetScale * points[i].targetNormalVelocity;
+    }
+    const std::array<Real, 8> impulses =
+        solveNormalImpulses(body.invMass, body.invInertiaWorld, frame.n,
+                            std::span(offsets.data(), points.size()),
+                            std::span(freeVelocities.data(), points.size()));
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        points[i].normalImpulse = impulses[i];
+        applyImpulseAtOffset(body, impulses[i] * frame.n, points[i].r);
+    }
+}
+
+/// Scales each friction impulse back into the cone of its point's normal impulse (6.2).
+void clampFrictionToCone(Body& body, const SolverFrame& frame, std::span<SolverPoint> points)
+{
+    for (SolverPoint& point : points) {
+        const Real bound = point.friction * point.normalImpulse;
+        const Real magnitude = planarLength(point.tangentImpulse1, point.tangentImpulse2);
+        if (magnitude <= bound) {
+            continue;
+        }
+        const Real scale = bound / magnitude;
+        const Real change1 = (scale - 1.0) * point.tangentImpulse1;
+        const Real change2 = (scale - 1.0) * point.tangentImpulse2;
+        point.tangentImpulse1 += change1;
+        point.tangentImpulse2 += change2;
+        applyImpulseAtOffset(body, change1 * frame.t1 + change2 * frame.t2, point.r);
+    }
+}
+
 /// Gauss-Seidel over the points, friction then normal at each (normal last so non-penetration
 /// wins), accumulated impulses clamped to the cone |lambda_t| <= mu lambda_n (6.2) and
-/// lambda_n >= 0 (5.4). `targetScale` scales every restitution target (5.6).
+/// lambda_n >= 0 (5.4). `targetScale` scales every restitution target (5.6). Sweeps that have
+/// not converged at the cap end with the exact normal impulses (5.11).
 void solvePoints(Body& body, const SolverFrame& frame, std::span<SolverPoint> points,
                  Real targetScale, int iterations, Real convergence)
 {
@@ -193,9 +242,15 @@ void solvePoints(Body& body, const SolverFrame& frame, std::span<SolverPoint> po
             largestImpulse = std::max(largestImpulse, point.normalImpulse);
         }
         if (largestChange <= convergence * largestImpulse) {
-            break;
+            return;
         }
     }
+    // (5.11): a contact patch much longer than it is wide (a plate on its edge) makes
+    // Gauss-Seidel converge so slowly that the cap leaves vertices approaching, and the push-out
+    // (4.5) then turns the depth into potential energy. Normal last, as in a sweep.
+    solveNormalExactly(body, frame, points, targetScale);
+    clampFrictionToCone(body, frame, points);
+    solveNormalExactly(body, frame, points, targetScale);
 }
 
 struct PreparedSolve {
@@ -308,6 +363,8 @@ ContactWork solveRestingContact(Body& body, ContactManifold& manifold,
                                 const ContactSolveSettings& settings,
                                 const WarmStartCache& warmStart)
 {
+    // (5.9) divides by tau: a sub-step has positive length.
+    TUMBLE_ASSERT(tau > 0.0);
     // Prepared before gravity acts, so a body at rest on a slope sees no sliding and keeps the
     // static coefficient.
     PreparedSolve solve = prepare(body, manifold, 0.0, settings.restitutionThreshold);
