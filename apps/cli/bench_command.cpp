@@ -60,16 +60,18 @@ long stepCount(const scenario::Scenario& loaded)
 }
 
 /// tumble on `loaded`: the world is built outside the timing, then stepped `steps` times.
-BenchRow runTumble(const scenario::Scenario& loaded, const std::string& name, int threads)
+BenchRow runTumble(const scenario::Scenario& loaded, const std::string& name, int threads,
+                   bool sleep = true)
 {
     BenchRow row;
     row.scenario = name;
-    row.engine = "tumble";
+    row.engine = sleep ? "tumble" : "tumble nosleep";
     row.bodies = static_cast<int>(loaded.bodies.size());
     row.threads = threads;
     row.steps = stepCount(loaded);
     scenario::Scenario configured = loaded;
     configured.settings.threads = threads;
+    configured.settings.allowSleep = sleep;
     const long long heapBefore = heapInUse();
     scenario::BuiltWorld built = scenario::buildWorld(configured);
     row.heapBytes = heapInUse() - heapBefore;
@@ -79,8 +81,11 @@ BenchRow runTumble(const scenario::Scenario& loaded, const std::string& name, in
     }
     row.stepSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    // With sleep off a body at rest stays awake; the rest test (7.1) still counts it.
+    const WorldSettings& settings = built.world.settings();
     for (const BodyId id : built.bodies) {
-        row.bodiesAtRest += built.world.body(id).asleep ? 1 : 0;
+        const Body& body = built.world.body(id);
+        row.bodiesAtRest += body.asleep || body.slowTime >= settings.sleepTime ? 1 : 0;
     }
     return row;
 }
@@ -231,10 +236,12 @@ int benchCommand(const BenchOptions& options)
         for (const int threads : options.threads) {
             rows.push_back(runTumble(loaded, name, threads));
         }
+        // The same with sleeping off: every body is stepped to the end, resting or not.
+        rows.push_back(runTumble(loaded, name, options.threads.front(), false));
         // The reference for the ratios: tumble on one thread, or the first thread count timed.
         std::optional<double> reference;
         for (std::size_t i = first; i < rows.size(); ++i) {
-            if (rows[i].threads == 1 || !reference) {
+            if (rows[i].engine == "tumble" && (rows[i].threads == 1 || !reference)) {
                 reference = rows[i].nsPerBodyStep();
             }
         }
