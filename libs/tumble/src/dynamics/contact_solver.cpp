@@ -363,8 +363,9 @@ ContactWork solveRestingContact(Body& body, ContactManifold& manifold,
                                 const ContactSolveSettings& settings,
                                 const WarmStartCache& warmStart)
 {
-    // (5.9) divides by tau: a sub-step has positive length.
-    TUMBLE_ASSERT(tau > 0.0);
+    // (5.9) divides by tau: a sub-step has positive length. A NaN tau passes: it comes from a
+    // state already non-finite, which the caller reports (docs/robustness.md), not a zero step.
+    TUMBLE_ASSERT(!(tau <= 0.0));
     // Prepared before gravity acts, so a body at rest on a slope sees no sliding and keeps the
     // static coefficient.
     PreparedSolve solve = prepare(body, manifold, 0.0, settings.restitutionThreshold);
