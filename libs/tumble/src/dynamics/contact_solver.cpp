@@ -50,6 +50,9 @@ struct SolverPoint {
     Real normalImpulse = 0.0;
     Real tangentImpulse1 = 0.0;
     Real tangentImpulse2 = 0.0;
+    /// The shift s of the last friction solve on the cone's edge (6.4), where the next sweep's
+    /// Newton iteration starts: the edge solution moves little from sweep to sweep.
+    Real frictionShift = 0.0;
 };
 
 struct SolverFrame {
@@ -112,7 +115,7 @@ SolverPoint preparePoint(const Body& body, const SolverFrame& frame, const Vec3&
 /// |lambda| = mu lambda_n, which makes the remaining sliding velocity exactly opposite to it
 /// (maximal dissipation). s is found by Newton's method on 1/|lambda(s)| - 1/bound, which is
 /// concave and increasing, so the iteration converges from s = 0 without overshooting.
-void solveFriction(const SolverPoint& point, Real v1, Real v2, Real& impulse1, Real& impulse2)
+void solveFriction(SolverPoint& point, Real v1, Real v2, Real& impulse1, Real& impulse2)
 {
     const std::array<Real, 4>& k = point.tangentK;
     const Real free1 = v1 - (k[0] * point.tangentImpulse1 + k[1] * point.tangentImpulse2);
@@ -131,7 +134,10 @@ void solveFriction(const SolverPoint& point, Real v1, Real v2, Real& impulse1, R
         impulse2 = 0.0;
         return;
     }
-    Real shift = 0.0;
+    // Newton's method converges from any start s >= 0: from the left of the root monotonically,
+    // and from the right the tangent of the concave function lies above it, so the first step
+    // lands left of the root.
+    Real shift = point.frictionShift;
     for (int iteration = 0; iteration < 50; ++iteration) {
         const Real a = k[0] + shift;
         const Real d = k[3] + shift;
@@ -150,6 +156,7 @@ void solveFriction(const SolverPoint& point, Real v1, Real v2, Real& impulse1, R
         const Real slope = quadratic / (magnitude * magnitude * magnitude);
         shift = std::max(0.0, shift - value / slope);
     }
+    point.frictionShift = shift;
     // Rounding aside the impulse is on the circle; put it there exactly.
     const Real scale = bound / planarLength(impulse1, impulse2);
     impulse1 *= scale;
