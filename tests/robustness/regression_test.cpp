@@ -117,6 +117,77 @@ TEST(Regression, APlateStandingOnItsEdgeGainsNoEnergy)
     EXPECT_LE(outcome.maxRelativeEnergyGain, kEnergyTolerance);
 }
 
+// Found by world_step_fuzzer (tests/fuzz/regressions/world_step/*_shrinking_substeps and
+// light_box_impact_of_the_longer_solve): light bodies pivoting on a corner at dt near 0.1 s. The
+// time of impact searched the motion resting-solved over the whole remaining step, found a second
+// corner swung down within 1e-4 s, and the motion re-solved over that short sub-step had no impact
+// at all: every sub-step advanced ~1e-4 s, and after the 32nd the rest of the step ran unsearched,
+// sank up to 0.16 m and the push-out (4.5) added 1-4 % of the energy scale. Now the sub-step is
+// bisected back up to the impact (4.3a), and the 32nd sub-step ends the step (4.3b).
+void expectBoundedDrop(const DropCase& drop)
+{
+    const DropOutcome outcome = runDrop(drop);
+    EXPECT_TRUE(outcome.finite) << "non-finite after step " << outcome.steps;
+    EXPECT_TRUE(outcome.penetrationBounded()) << outcome.maxPenetration << " m";
+    EXPECT_TRUE(outcome.energyBounded())
+        << outcome.maxRelativeEnergyGain << " of the energy scale, tolerance "
+        << outcome.energyTolerance();
+}
+
+TEST(Regression, ALightStickPivotingOnACornerGainsNoEnergy)
+{
+    DropCase drop;
+    drop.mass = 1.0000000000000004e-06;
+    drop.size = Vec3(0.99999999999309264, 0.99999999999309264, 30.997737772072604);
+    drop.orientation = Quat(0.57071970705279418, -0.57684524393466308, 0.13625467275531,
+                            0.56829855242106242);
+    drop.dt = 0.099999999998848815;
+    drop.height = 0.0017422018264335668;
+    drop.velocity = Vec3(0.0052817733175699278, -0.0095210002472042709, 0.0024984008909781966);
+    drop.angularVelocity =
+        Vec3(0.12752774644289969, 0.040333262950819307, -0.030555818202072527);
+    drop.restitution = 0.023851810179718935;
+    drop.friction = 7.2862694888080082;
+    drop.steps = 134;
+    expectBoundedDrop(drop);
+}
+
+TEST(Regression, ASpinningChipWithFrictionTenGainsNoEnergy)
+{
+    DropCase drop;
+    drop.mass = 1.0000000000000004e-06;
+    drop.size = Vec3(0.0010000000000000002, 0.0046979674128912949, 0.0010000000000000002);
+    drop.orientation = Quat(0.42858176232565875, -0.69107908531493489, 0.57222138667778999,
+                            0.10625467270032235);
+    drop.dt = 0.099999999998848815;
+    drop.height = 2.4484625040526312e-09;
+    drop.velocity =
+        Vec3(0.0047163221968758171, -0.00090667010273835845, 0.0015618443156448843);
+    drop.angularVelocity = Vec3(-2.6807311783611185, -0.98841888531563005, 2.6904855534670702);
+    drop.restitution = 0.62748921866291163;
+    drop.friction = 9.9999999999900009;
+    drop.steps = 142;
+    expectBoundedDrop(drop);
+}
+
+TEST(Regression, ALightBoxOnACornerIsNotHeldToTheImpactOfTheLongerSolve)
+{
+    DropCase drop;
+    drop.mass = 3.58910475496205e-06;
+    drop.size = Vec3(0.78130666894614764, 0.28737466875514434, 0.60539511532701307);
+    drop.orientation = Quat(-0.28242548258935096, -0.37226340297707061, -0.60663274966613645,
+                            0.643158232957183);
+    drop.dt = 0.09325649005773165;
+    drop.height = 2.0789272894558605e-05;
+    drop.velocity =
+        Vec3(0.0022685974986842591, -0.0015165206068471293, 0.0010302636210331344);
+    drop.angularVelocity = Vec3(-0.5529027754821696, 1.0105445535600246, -0.10025236199963315);
+    drop.restitution = 0.060209539721058469;
+    drop.friction = 2.1451805680229521;
+    drop.steps = 75;
+    expectBoundedDrop(drop);
+}
+
 TEST(Regression, AStepWithANonFiniteStateEnds)
 {
     World world;

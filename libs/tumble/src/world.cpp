@@ -27,12 +27,20 @@ constexpr Real kImpactSpeed = 1e-3;
 /// The time of impact puts the first vertex within this fraction of the contact tolerance of the
 /// plane, so impacts happen at the plane while the tolerance still gathers an edge or a face.
 constexpr Real kImpactTolerance = 1e-4;
-/// Impacts within one step beyond this many are left to the resting-contact solve and the
-/// penetration correction, so a pathological case cannot stall a step.
+/// An approaching vertex within this many impact tolerances of the plane has reached it: the
+/// search stops at the tolerance, but rounding (a 500 m lever) or a sub-step re-solved after the
+/// search (4.3a) can leave the vertex a hair above it, and waiting for it to cross the tolerance
+/// exactly took ever shorter sub-steps (04-detection.md, (4.3b)).
+constexpr Real kImpactBand = 2.0;
+/// Sub-steps in one step: the last one is searched like the others but ends the step, and the
+/// body's motion over the rest of the step is dropped, so a pathological case (sub-steps that
+/// keep shrinking) costs simulated time instead of sinking and the push-out's energy (4.3b).
 constexpr int kMaxSubsteps = 32;
 /// Time-of-impact searches in one sub-step: each searches the motion re-solved for the shorter
 /// sub-step the previous one found (the fixed point is usually reached in a few).
 constexpr int kMaxImpactSearches = 64;
+/// The bisection of (4.3a) stops once the clear and the crossing sub-steps agree to this fraction.
+constexpr Real kBisectionResolution = 1e-9;
 /// Slots per batch: the unit step() hands to a thread. Fixed, so the batches (and the order in
 /// which their events are merged) do not depend on the number of threads; small enough that a
 /// few thousand bodies make enough batches to balance two to sixteen threads, large enough that
@@ -74,6 +82,20 @@ Real lowestApproachingHeight(const Body& body, const ContactManifold& manifold)
     return lowest;
 }
 
+/// Height of the lowest vertex outside `touching` at time s of the sub-step.
+Real freeClearance(const SubstepMotion& motion, const Vec3& halfExtents, const Plane& plane,
+                   std::uint8_t touching, Real s)
+{
+    const std::array<Real, 8> heights = vertexHeights(poseAt(motion, s), halfExtents, plane);
+    Real lowest = std::numeric_limits<Real>::infinity();
+    for (int i = 0; i < 8; ++i) {
+        if (((touching >> i) & 1u) == 0u) {
+            lowest = std::min(lowest, heights[i]);
+        }
+    }
+    return lowest;
+}
+
 /// Keeps only the points that do not approach the plane.
 void dropApproachingPoints(const Body& body, ContactManifold& manifold)
 {
@@ -87,9 +109,9 @@ void dropApproachingPoints(const Body& body, ContactManifold& manifold)
     manifold.pointCount = kept;
 }
 
-/// After an impact found by the time of impact, the lowest vertex is at most the impact
-/// tolerance above the plane: put it on the plane, a translation that lowers the potential
-/// energy by at most m g times that tolerance (04-detection.md, (4.5)).
+/// After an impact found by the time of impact, the lowest vertex is at most kImpactBand impact
+/// tolerances above the plane: put it on the plane, a translation that lowers the potential
+/// energy by at most m g times that height (04-detection.md, (4.5)).
 void settleOnPlane(Body& body, const ContactManifold& manifold)
 {
     Real lowest = std::numeric_limits<Real>::infinity();
@@ -382,7 +404,7 @@ void World::advanceSequential(BodyId id, Slot& slot, Real dt, StepEvents& events
         //    vertex has reached the plane; approaching vertices still above it are left to the
         //    time of impact, so the impact happens at the plane.
         if (approachSpeed(body, contacts) > kImpactSpeed) {
-            if (lowestApproachingHeight(body, contacts) <= impactTolerance()) {
+            if (lowestApproachingHeight(body, contacts) <= kImpactBand * impactTolerance()) {
                 const Real energyBefore = energyOf(body);
                 const ImpactOutcome outcome = resolveImpact(body, contacts, solveSettings);
                 bookContact(body, outcome.work, energyOf(body) - energyBefore, true);
@@ -403,18 +425,53 @@ void World::advanceSequential(BodyId id, Slot& slot, Real dt, StepEvents& events
         ContactWork restingWork = integrateVelocities(body, contacts, tau, slot.warmStart);
         // 4. Shorten the sub-step to the first impact of another vertex.
         //    The resting-contact solve depends on tau, so the motion over a shortened sub-step
-        //    is not the one searched: search again until no vertex crosses within it.
-        for (int search = 0; m_ground && substep < kMaxSubsteps && search < kMaxImpactSearches;
-             ++search) {
-            const Real impact = timeOfImpact(
-                substepMotion(body, positionStartVelocity(velocityStart, body, contacts), tau),
-                body.shape.halfExtents(), *m_ground, vertexMask(contacts), impactTolerance());
+        //    is not the one searched: search again until no vertex crosses within it. When the
+        //    motion re-solved for the shortened sub-step no longer comes near the plane, the
+        //    impact belonged to the longer solve only: bisect between the longest sub-step
+        //    known to be clear and the shortest known to cross (04-detection.md, (4.3a)).
+        const std::uint8_t touching = vertexMask(contacts);
+        Real clear = 0.0;
+        Real crossing = std::numeric_limits<Real>::infinity();
+        bool tauIsClear = false;
+        for (int search = 0; m_ground && search < kMaxImpactSearches; ++search) {
+            const SubstepMotion motion =
+                substepMotion(body, positionStartVelocity(velocityStart, body, contacts), tau);
+            const Real impact = timeOfImpact(motion, body.shape.halfExtents(), *m_ground,
+                                             touching, impactTolerance());
+            Real next = 0.0;
             if (impact >= tau) {
-                break;
+                tauIsClear = true;
+                clear = tau;
+                // Done when nothing crossed, when the vertex found ends the sub-step at the
+                // impact tolerance (a real impact, met next sub-step), or when the bracket is
+                // closed.
+                const Real endHeight =
+                    freeClearance(motion, body.shape.halfExtents(), *m_ground, touching, tau);
+                if (!std::isfinite(crossing) || endHeight <= kImpactBand * impactTolerance() ||
+                    crossing - clear <= kBisectionResolution * crossing) {
+                    break;
+                }
+                next = 0.5 * (clear + crossing);
+            } else if (freeClearance(motion, body.shape.halfExtents(), *m_ground, touching,
+                                     impact) > impactTolerance()) {
+                // The search ran out of advances before any vertex arrived: the motion is
+                // only known to be clear until then, so no bracket to bisect.
+                tauIsClear = false;
+                next = impact;
+            } else {
+                tauIsClear = false;
+                crossing = tau;
+                next = clear > 0.0 ? 0.5 * (clear + crossing) : impact;
             }
             body.linearVelocity = velocityStart;
             body.angularVelocity = angularVelocityStart;
-            tau = impact;
+            tau = next;
+            restingWork = integrateVelocities(body, contacts, tau, slot.warmStart);
+        }
+        if (!tauIsClear && clear > 0.0) {
+            body.linearVelocity = velocityStart;
+            body.angularVelocity = angularVelocityStart;
+            tau = clear;
             restingWork = integrateVelocities(body, contacts, tau, slot.warmStart);
         }
         slot.warmStart = makeWarmStart(contacts, tau);
@@ -436,6 +493,10 @@ void World::advanceSequential(BodyId id, Slot& slot, Real dt, StepEvents& events
         // elapsed + tau can round up to dt when tau falls short of the remaining time by less
         // than an ulp: the step is then complete, and another sub-step would have length zero.
         if (!(elapsed < dt)) {
+            break;
+        }
+        // (4.3b): the last sub-step allowed ends the step, short of dt if it must.
+        if (substep + 1 >= kMaxSubsteps) {
             break;
         }
     }
