@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <span>
 
 namespace tumble {
@@ -381,10 +382,20 @@ ContactWork solveRestingContact(Body& body, ContactManifold& manifold,
         return ContactWork{};
     }
     for (int i = 0; i < solve.count; ++i) {
-        SolverPoint& point = solve.points[i];
         // (5.9): the target -h / tau lets a vertex at height h reach the plane, no further.
-        point.targetNormalVelocity = -std::max(0.0, -manifold.points[i].penetration) / tau;
-        point.restitution = RestitutionState::None;
+        solve.points[i].targetNormalVelocity =
+            -std::max(0.0, -manifold.points[i].penetration) / tau;
+        solve.points[i].restitution = RestitutionState::None;
+    }
+    const PreparedSolve fromZero = solve;
+    const Vec3 freeVelocity = body.linearVelocity;
+    const Vec3 freeAngularVelocity = body.angularVelocity;
+    // (5.12): with targets <= 0 the solution never has more kinetic energy than the body had
+    // without contact; rounding aside, more means the solve did not reach it.
+    const Real allowed =
+        body.kineticEnergy() * (1.0 + 1e-12) + std::numeric_limits<Real>::min();
+    for (int i = 0; i < solve.count; ++i) {
+        SolverPoint& point = solve.points[i];
         // (5.10): start from last step's impulse rates at this vertex, inside the cone.
         const int vertex = manifold.points[i].vertex;
         if (((warmStart.vertices >> vertex) & 1u) == 0u) {
@@ -408,6 +419,23 @@ ContactWork solveRestingContact(Body& body, ContactManifold& manifold,
     }
     solvePoints(body, solve.frame, std::span(solve.points.data(), solve.count), 1.0,
                 settings.iterations, kRestingConvergence);
+    // (5.12): a warm start the sweeps could not take back in time, or friction scaled into its
+    // cone after the cap (5.11), can leave more energy than the body had. Sweeps started from
+    // zero only lower the solve's objective, which bounds the energy; without friction, the
+    // exact normal impulses at the cap (5.11) keep that bound too.
+    for (const bool withFriction : {true, false}) {
+        if (body.kineticEnergy() <= allowed) {
+            break;
+        }
+        body.linearVelocity = freeVelocity;
+        body.angularVelocity = freeAngularVelocity;
+        solve = fromZero;
+        for (int i = 0; i < solve.count && !withFriction; ++i) {
+            solve.points[i].friction = 0.0;
+        }
+        solvePoints(body, solve.frame, std::span(solve.points.data(), solve.count), 1.0,
+                    settings.iterations, kRestingConvergence);
+    }
     ImpactOutcome outcome;
     publish(solve, body, manifold, outcome);
     return outcome.work;
