@@ -7,6 +7,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 FUZZ_SECONDS="${FUZZ_SECONDS:-120}"
+# Targets whose findings are printed in full but do not fail the run, while an open finding of
+# theirs is being fixed (named in .ci/run with the issue); empty: every finding fails.
+FUZZ_REPORT_ONLY="${FUZZ_REPORT_ONLY:-}"
 
 bash tools/install-deps.sh
 CXX="${FUZZ_CXX:-clang++}"
@@ -39,9 +42,13 @@ run_fuzzer() {
         -artifact_prefix="$findings/${target}-" -print_final_stats=1 >"$log" 2>&1 || rc=$?
     grep -E "^#[0-9]+ +(INITED|DONE)|^stat::(number_of_executed_units|average_exec_per_sec|new_units_added|peak_rss_mb)|^Done" "$log" || true
     if [[ $rc -ne 0 ]] || compgen -G "$findings/${target}-*" >/dev/null; then
-        echo "ci-fuzz: $target FAILED (exit $rc); inputs in $findings, log $log" >&2
         tail -n 60 "$log" >&2
-        status=1
+        if [[ " $FUZZ_REPORT_ONLY " == *" $target "* ]]; then
+            echo "ci-fuzz: $target FINDING, reported only (FUZZ_REPORT_ONLY); inputs in $findings" >&2
+        else
+            echo "ci-fuzz: $target FAILED (exit $rc); inputs in $findings, log $log" >&2
+            status=1
+        fi
     else
         echo "ci-fuzz: $target: no findings"
     fi
