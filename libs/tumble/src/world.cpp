@@ -445,10 +445,11 @@ void World::advanceSequential(BodyId id, Slot& slot, Real dt, StepEvents& events
                 // Done when nothing crossed, when the vertex found ends the sub-step at the
                 // impact tolerance (a real impact, met next sub-step), or when the bracket is
                 // closed.
-                const Real endHeight =
-                    freeClearance(motion, body.shape.halfExtents(), *m_ground, touching, tau);
-                if (!std::isfinite(crossing) || endHeight <= kImpactBand * impactTolerance() ||
-                    crossing - clear <= kBisectionResolution * crossing) {
+                // (The end height costs a pose: it is only needed when there is a bracket.)
+                if (!std::isfinite(crossing) ||
+                    crossing - clear <= kBisectionResolution * crossing ||
+                    freeClearance(motion, body.shape.halfExtents(), *m_ground, touching, tau) <=
+                        kImpactBand * impactTolerance()) {
                     break;
                 }
                 next = 0.5 * (clear + crossing);
