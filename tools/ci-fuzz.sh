@@ -37,7 +37,13 @@ run_fuzzer() {
     # -timeout: one input running longer than this is a hang; -rss_limit_mb: a memory blow-up.
     # The first corpus directory collects new inputs; the others are read only.
     local rc=0
-    "build-fuzz/tests/fuzz/${target}_fuzzer" "$corpus" "$@" "tests/fuzz/regressions/$target" \
+    # A target whose findings are reported only keeps fuzzing after one (in a child process) so
+    # the whole FUZZ_SECONDS is spent searching.
+    local keep_going=()
+    if [[ " $FUZZ_REPORT_ONLY " == *" $target "* ]]; then
+        keep_going=(-fork=1 -ignore_crashes=1)
+    fi
+    "build-fuzz/tests/fuzz/${target}_fuzzer" "${keep_going[@]}" "$corpus" "$@" "tests/fuzz/regressions/$target" \
         -max_total_time="$FUZZ_SECONDS" -timeout=10 -rss_limit_mb=2048 \
         -artifact_prefix="$findings/${target}-" -print_final_stats=1 >"$log" 2>&1 || rc=$?
     grep -E "^#[0-9]+ +(INITED|DONE)|^stat::(number_of_executed_units|average_exec_per_sec|new_units_added|peak_rss_mb)|^Done" "$log" || true
