@@ -82,20 +82,6 @@ Real lowestApproachingHeight(const Body& body, const ContactManifold& manifold)
     return lowest;
 }
 
-/// Height of the lowest vertex outside `touching` at time s of the sub-step.
-Real freeClearance(const SubstepMotion& motion, const Vec3& halfExtents, const Plane& plane,
-                   std::uint8_t touching, Real s)
-{
-    const std::array<Real, 8> heights = vertexHeights(poseAt(motion, s), halfExtents, plane);
-    Real lowest = std::numeric_limits<Real>::infinity();
-    for (int i = 0; i < 8; ++i) {
-        if (((touching >> i) & 1u) == 0u) {
-            lowest = std::min(lowest, heights[i]);
-        }
-    }
-    return lowest;
-}
-
 /// Keeps only the points that do not approach the plane.
 void dropApproachingPoints(const Body& body, ContactManifold& manifold)
 {

@@ -16,8 +16,10 @@ namespace {
 /// the crossing, which is safe: the world simply takes another sub-step from there.
 constexpr int kMaxAdvances = 200;
 
-Real clearance(const SubstepMotion& motion, const Vec3& halfExtents, const Plane& plane,
-               std::uint8_t touchingVertices, Real s)
+} // namespace
+
+Real freeClearance(const SubstepMotion& motion, const Vec3& halfExtents, const Plane& plane,
+                   std::uint8_t touchingVertices, Real s)
 {
     const std::array<Real, 8> heights = vertexHeights(poseAt(motion, s), halfExtents, plane);
     Real lowest = std::numeric_limits<Real>::infinity();
@@ -28,8 +30,6 @@ Real clearance(const SubstepMotion& motion, const Vec3& halfExtents, const Plane
     }
     return lowest;
 }
-
-} // namespace
 
 Transform poseAt(const SubstepMotion& motion, Real s)
 {
@@ -62,7 +62,7 @@ Real timeOfImpact(const SubstepMotion& motion, const Vec3& halfExtents, const Pl
 
     Real s = 0.0;
     for (int advance = 0; advance < kMaxAdvances; ++advance) {
-        const Real height = clearance(motion, halfExtents, plane, touchingVertices, s);
+        const Real height = freeClearance(motion, halfExtents, plane, touchingVertices, s);
         if (height <= tolerance) {
             return s;
         }

@@ -25,6 +25,11 @@ struct SubstepMotion {
 /// The pose after time s (0 <= s <= tau) of the sub-step.
 Transform poseAt(const SubstepMotion& motion, Real s);
 
+/// Height above the plane of the lowest vertex outside `touchingVertices` (bit i = vertex i) at
+/// time s of the sub-step; infinity when every vertex is touching.
+Real freeClearance(const SubstepMotion& motion, const Vec3& halfExtents, const Plane& plane,
+                   std::uint8_t touchingVertices, Real s);
+
 /// The earliest s in (0, tau] at which a vertex outside `touchingVertices` (bit i = vertex i)
 /// comes within `tolerance` of the plane, or tau when none does. Never steps past a crossing:
 /// each advance is the remaining clearance over a bound on the approach speed (4.4).
