@@ -149,8 +149,12 @@ BodyId World::createBody(const BodyDef& def)
         m_batchEvents.back().collisions.reserve(kBatchSize * kReservedImpactsPerBody);
         m_batchEvents.back().restEvents.reserve(kBatchSize);
     }
-    m_collisions.reserve(m_slots.size() * kReservedImpactsPerBody);
-    m_restEvents.reserve(m_slots.size());
+    // Grown geometrically: reserving the exact count would reallocate on every creation.
+    if (m_restEvents.capacity() < m_slots.size()) {
+        const std::size_t bodies = std::max(m_slots.size(), 2 * m_restEvents.capacity());
+        m_collisions.reserve(bodies * kReservedImpactsPerBody);
+        m_restEvents.reserve(bodies);
+    }
     slot.body = makeBody(def);
     slot.body.ledger.initial = energyOf(slot.body);
     slot.alive = true;
