@@ -24,6 +24,14 @@ constexpr Real kStickingSpeed = 1e-3;
 /// in far fewer sweeps than at 1e-12 (docs/physics/05-normal-impulse.md, (5.10)).
 constexpr Real kImpactConvergence = 1e-13;
 constexpr Real kRestingConvergence = 1e-10;
+/// A friction impulse whose component along its point's sliding exceeds this fraction of the
+/// solve's speed scale is driving the sliding (5.13).
+constexpr Real kDrivingSpeed = 1e-6;
+/// Most alternations of the normal and the friction problems after a capped solve whose friction
+/// drives sliding (5.13), and the friction sweeps in each: the alternation converges linearly, so
+/// friction solved further with normal impulses that are still moving is wasted work.
+constexpr int kStaggeredPasses = 64;
+constexpr int kStaggeredFrictionSweeps = 4;
 
 /// Length of (a, b). Impulses and velocities are far from overflow, so this skips the scaling
 /// std::hypot does (which made it the solver's single largest cost).
@@ -193,6 +201,58 @@ void solveNormalExactly(Body& body, const SolverFrame& frame, std::span<SolverPo
     }
 }
 
+/// (5.13): friction alone, with the normal impulses held. Each point's step (6.4) is the exact
+/// minimiser of the kinetic energy over its own disc, and the discs no longer move, so the
+/// sweeps are block coordinate descent on a convex problem and converge, where the full sweeps
+/// may cycle because every normal impulse moves the other points' cones.
+void solveFrictionWithNormalsHeld(Body& body, const SolverFrame& frame,
+                                  std::span<SolverPoint> points, int iterations, Real convergence)
+{
+    for (int iteration = 0; iteration < iterations; ++iteration) {
+        Real largestChange = 0.0;
+        Real largestImpulse = 0.0;
+        for (SolverPoint& point : points) {
+            const Vec3 velocity = body.linearVelocity + glm::cross(body.angularVelocity, point.r);
+            Real candidate1 = 0.0;
+            Real candidate2 = 0.0;
+            solveFriction(point, glm::dot(frame.t1, velocity), glm::dot(frame.t2, velocity),
+                          candidate1, candidate2);
+            const Real change1 = candidate1 - point.tangentImpulse1;
+            const Real change2 = candidate2 - point.tangentImpulse2;
+            point.tangentImpulse1 = candidate1;
+            point.tangentImpulse2 = candidate2;
+            body.linearVelocity += body.invMass * (change1 * frame.t1 + change2 * frame.t2);
+            body.angularVelocity +=
+                change1 * point.angularPerTangent1 + change2 * point.angularPerTangent2;
+            largestChange = std::max({largestChange, std::abs(change1), std::abs(change2)});
+            largestImpulse = std::max({largestImpulse, point.normalImpulse,
+                                       planarLength(candidate1, candidate2)});
+        }
+        if (largestChange <= convergence * largestImpulse) {
+            return;
+        }
+    }
+}
+
+/// Whether a point's friction impulse has a component along its own sliding velocity, beyond
+/// rounding relative to `speedScale` (the fastest point before the solve): Coulomb friction
+/// never does that (6.1), so a solve that ends so has not found the solution (5.13).
+bool frictionDrivesSliding(const Body& body, const SolverFrame& frame,
+                           std::span<const SolverPoint> points, Real speedScale)
+{
+    for (const SolverPoint& point : points) {
+        const Vec3 velocity = body.linearVelocity + glm::cross(body.angularVelocity, point.r);
+        const Real sliding1 = glm::dot(frame.t1, velocity);
+        const Real sliding2 = glm::dot(frame.t2, velocity);
+        const Real power = point.tangentImpulse1 * sliding1 + point.tangentImpulse2 * sliding2;
+        if (power > kDrivingSpeed * speedScale *
+                        planarLength(point.tangentImpulse1, point.tangentImpulse2)) {
+            return true;
+        }
+    }
+    return false;
+}
+
 /// Scales each friction impulse back into the cone of its point's normal impulse (6.2).
 void clampFrictionToCone(Body& body, const SolverFrame& frame, std::span<SolverPoint> points)
 {
@@ -218,6 +278,11 @@ void clampFrictionToCone(Body& body, const SolverFrame& frame, std::span<SolverP
 void solvePoints(Body& body, const SolverFrame& frame, std::span<SolverPoint> points,
                  Real targetScale, int iterations, Real convergence)
 {
+    Real speedScale = 0.0;
+    for (const SolverPoint& point : points) {
+        speedScale = std::max(speedScale, glm::length(body.linearVelocity +
+                                                      glm::cross(body.angularVelocity, point.r)));
+    }
     for (int iteration = 0; iteration < iterations; ++iteration) {
         Real largestChange = 0.0;
         Real largestImpulse = 0.0;
@@ -257,9 +322,38 @@ void solvePoints(Body& body, const SolverFrame& frame, std::span<SolverPoint> po
     // (5.11): a contact patch much longer than it is wide (a plate on its edge) makes
     // Gauss-Seidel converge so slowly that the cap leaves vertices approaching, and the push-out
     // (4.5) then turns the depth into potential energy. Normal last, as in a sweep.
-    solveNormalExactly(body, frame, points, targetScale);
-    clampFrictionToCone(body, frame, points);
-    solveNormalExactly(body, frame, points, targetScale);
+    const auto endWithExactNormals = [&] {
+        solveNormalExactly(body, frame, points, targetScale);
+        clampFrictionToCone(body, frame, points);
+        solveNormalExactly(body, frame, points, targetScale);
+    };
+    endWithExactNormals();
+    if (!frictionDrivesSliding(body, frame, points, speedScale)) {
+        return;
+    }
+    // (5.13): friction at the face tilts the body and so moves the other points' cones; far
+    // above a friction of the patch's width over the height of the centre the sweeps cycle,
+    // and the last sweep's friction can drive the sliding it should resist. The normal problem
+    // (exactly) and the friction problem with the normal impulses held (convex, a few sweeps)
+    // then take turns until the velocities, unique where the split of the impulses among
+    // redundant corners is not, stop changing.
+    for (int pass = 0; pass < kStaggeredPasses; ++pass) {
+        const Vec3 linearBefore = body.linearVelocity;
+        const Vec3 angularBefore = body.angularVelocity;
+        solveNormalExactly(body, frame, points, targetScale);
+        solveFrictionWithNormalsHeld(body, frame, points, kStaggeredFrictionSweeps, convergence);
+        Real largestChange = 0.0;
+        for (const SolverPoint& point : points) {
+            largestChange = std::max(
+                largestChange, glm::length(body.linearVelocity - linearBefore +
+                                           glm::cross(body.angularVelocity - angularBefore,
+                                                      point.r)));
+        }
+        if (largestChange <= convergence * speedScale) {
+            break;
+        }
+    }
+    endWithExactNormals();
 }
 
 struct PreparedSolve {
