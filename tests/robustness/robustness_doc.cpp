@@ -136,9 +136,10 @@ std::string document()
            "finite state; energy (kinetic + potential) never above the initial energy by more "
            "than "
         << format("%g", kEnergyTolerance) << " of the energy scale (initial kinetic energy + m |g| "
-        << "(drop height + diagonal)) plus " << format("%g", kRotationEnergyCoefficient)
-        << " (|w| dt)^2 for the rotation's second-order energy error; no vertex below the plane "
-           "by more than "
+        << "(drop height + diagonal)) plus the bound (2.7b) on the exact rotation's "
+           "second-order energy error, 4 dt^2 |Pi|^4 |c_near c_far| (|c_near| / 96 + |c_far| / "
+           "48) at its largest over the steps (docs/physics/02-integration.md); no vertex below "
+           "the plane by more than "
         << format("%g", kPenetrationTolerance)
         << " of the length scale; | |q| - 1 | <= " << format("%g", kQuaternionTolerance)
         << "; at least one impact. Cases marked *bounce* fall face down and must leave the first "

@@ -19,6 +19,14 @@ void integrateRotation(Quat& orientation, Vec3& angularVelocity, const Vec3& ine
 Real rotationRateBound(const Quat& orientation, const Vec3& angularVelocity,
                        const Vec3& inertiaBody, Real maxStep, Integrator integrator);
 
+/// (2.7b): a bound on how far the kinetic energy of Integrator::Exact can move from its start
+/// value over torque-free rotation in steps of length h, to leading order in h, J: the splitting
+/// conserves a modified energy within 4 h^2 |Pi|^4 |c_near c_far| (|c_near| / 96 + |c_far| / 48)
+/// of the true one (docs/physics/02-integration.md). Zero for a symmetric body, whose split is
+/// exact.
+Real rotationEnergyErrorBound(const Quat& orientation, const Vec3& angularVelocity,
+                              const Vec3& inertiaBody, Real h);
+
 /// Same, on a body, keeping its world inverse inertia consistent with the new orientation.
 void integrateRotation(Body& body, Real dt, Integrator integrator);
 
