@@ -445,9 +445,15 @@ void World::advanceSequential(BodyId id, Slot& slot, Real dt, StepEvents& events
                 next = 0.5 * (clear + crossing);
             } else if (freeClearance(motion, body.shape.halfExtents(), *m_ground, touching,
                                      impact) > impactTolerance()) {
-                // The search ran out of advances before any vertex arrived: the motion is
-                // only known to be clear until then, so no bracket to bisect.
+                // The search ran out of advances before any vertex arrived (one grazes the
+                // plane): the motion is only known to be clear until then. Shorten the sub-step
+                // to it, or, once a longer sub-step is known to be clear, take that one: going
+                // back to bisecting alternated between the two up to the search cap, and every
+                // undecided search costs its full advances.
                 tauIsClear = false;
+                if (clear > 0.0) {
+                    break;
+                }
                 next = impact;
             } else {
                 tauIsClear = false;
