@@ -201,6 +201,24 @@ void solveNormalExactly(Body& body, const SolverFrame& frame, std::span<SolverPo
     }
 }
 
+/// One point's friction step (6.4) applied to the body; returns the largest change of its two
+/// impulse components.
+Real updateFriction(Body& body, const SolverFrame& frame, SolverPoint& point)
+{
+    const Vec3 velocity = body.linearVelocity + glm::cross(body.angularVelocity, point.r);
+    Real candidate1 = 0.0;
+    Real candidate2 = 0.0;
+    solveFriction(point, glm::dot(frame.t1, velocity), glm::dot(frame.t2, velocity), candidate1,
+                  candidate2);
+    const Real change1 = candidate1 - point.tangentImpulse1;
+    const Real change2 = candidate2 - point.tangentImpulse2;
+    point.tangentImpulse1 = candidate1;
+    point.tangentImpulse2 = candidate2;
+    body.linearVelocity += body.invMass * (change1 * frame.t1 + change2 * frame.t2);
+    body.angularVelocity += change1 * point.angularPerTangent1 + change2 * point.angularPerTangent2;
+    return std::max(std::abs(change1), std::abs(change2));
+}
+
 /// (5.13): friction alone, with the normal impulses held. Each point's step (6.4) is the exact
 /// minimiser of the kinetic energy over its own disc, and the discs no longer move, so the
 /// sweeps are block coordinate descent on a convex problem and converge, where the full sweeps
@@ -212,21 +230,10 @@ void solveFrictionWithNormalsHeld(Body& body, const SolverFrame& frame,
         Real largestChange = 0.0;
         Real largestImpulse = 0.0;
         for (SolverPoint& point : points) {
-            const Vec3 velocity = body.linearVelocity + glm::cross(body.angularVelocity, point.r);
-            Real candidate1 = 0.0;
-            Real candidate2 = 0.0;
-            solveFriction(point, glm::dot(frame.t1, velocity), glm::dot(frame.t2, velocity),
-                          candidate1, candidate2);
-            const Real change1 = candidate1 - point.tangentImpulse1;
-            const Real change2 = candidate2 - point.tangentImpulse2;
-            point.tangentImpulse1 = candidate1;
-            point.tangentImpulse2 = candidate2;
-            body.linearVelocity += body.invMass * (change1 * frame.t1 + change2 * frame.t2);
-            body.angularVelocity +=
-                change1 * point.angularPerTangent1 + change2 * point.angularPerTangent2;
-            largestChange = std::max({largestChange, std::abs(change1), std::abs(change2)});
-            largestImpulse = std::max({largestImpulse, point.normalImpulse,
-                                       planarLength(candidate1, candidate2)});
+            largestChange = std::max(largestChange, updateFriction(body, frame, point));
+            largestImpulse = std::max(
+                {largestImpulse, point.normalImpulse,
+                 planarLength(point.tangentImpulse1, point.tangentImpulse2)});
         }
         if (largestChange <= convergence * largestImpulse) {
             return;
@@ -287,21 +294,9 @@ void solvePoints(Body& body, const SolverFrame& frame, std::span<SolverPoint> po
         Real largestChange = 0.0;
         Real largestImpulse = 0.0;
         for (SolverPoint& point : points) {
-            Vec3 velocity = body.linearVelocity + glm::cross(body.angularVelocity, point.r);
-            const Real v1 = glm::dot(frame.t1, velocity);
-            const Real v2 = glm::dot(frame.t2, velocity);
-            Real candidate1 = 0.0;
-            Real candidate2 = 0.0;
-            solveFriction(point, v1, v2, candidate1, candidate2);
-            const Real change1 = candidate1 - point.tangentImpulse1;
-            const Real change2 = candidate2 - point.tangentImpulse2;
-            point.tangentImpulse1 = candidate1;
-            point.tangentImpulse2 = candidate2;
-            body.linearVelocity += body.invMass * (change1 * frame.t1 + change2 * frame.t2);
-            body.angularVelocity +=
-                change1 * point.angularPerTangent1 + change2 * point.angularPerTangent2;
+            const Real frictionChange = updateFriction(body, frame, point);
 
-            velocity = body.linearVelocity + glm::cross(body.angularVelocity, point.r);
+            const Vec3 velocity = body.linearVelocity + glm::cross(body.angularVelocity, point.r);
             const Real normalVelocity = glm::dot(frame.n, velocity);
             const Real target = targetScale * point.targetNormalVelocity;
             const Real candidate =
@@ -311,8 +306,7 @@ void solvePoints(Body& body, const SolverFrame& frame, std::span<SolverPoint> po
             body.linearVelocity += (body.invMass * change) * frame.n;
             body.angularVelocity += change * point.angularPerNormal;
 
-            largestChange = std::max({largestChange, std::abs(change), std::abs(change1),
-                                      std::abs(change2)});
+            largestChange = std::max({largestChange, std::abs(change), frictionChange});
             largestImpulse = std::max(largestImpulse, point.normalImpulse);
         }
         if (largestChange <= convergence * largestImpulse) {
