@@ -7,12 +7,19 @@ namespace tumble {
 
 std::array<Real, 8> vertexHeights(const Transform& pose, const Vec3& halfExtents, const Plane& plane)
 {
-    // (4.1): h_i = n . (x + R p_i) - height. With n = +y only the second row of R matters.
-    const std::array<Vec3, 8> local = cuboidVertices(halfExtents);
+    // (4.1): h_i = n . (x + R p_i) - height. With n = +y only the second row of R matters:
+    // n . R p_i = sum_k (+-e_k) R_yk, with R_yk from the quaternion (w, x, y, z) (the time of
+    // impact evaluates this at every advance, so not eight full rotations).
+    const Quat& q = pose.orientation;
+    const Real alongX = halfExtents.x * 2.0 * (q.x * q.y + q.w * q.z);
+    const Real alongY = halfExtents.y * (1.0 - 2.0 * (q.x * q.x + q.z * q.z));
+    const Real alongZ = halfExtents.z * 2.0 * (q.y * q.z - q.w * q.x);
+    const Real centre = pose.position.y - plane.height;
     std::array<Real, 8> heights{};
     for (int i = 0; i < 8; ++i) {
-        heights[i] = glm::dot(Plane::normal(), pose.position + pose.orientation * local[i]) -
-                     plane.height;
+        // Vertex i has +e_k where bit k of i is set (cuboidVertices).
+        heights[i] = centre + (((i & 1) ? alongX : -alongX) + ((i & 2) ? alongY : -alongY) +
+                               ((i & 4) ? alongZ : -alongZ));
     }
     return heights;
 }
