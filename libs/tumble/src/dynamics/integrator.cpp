@@ -25,9 +25,10 @@ void turnAboutBodyAxis(Quat& orientation, Vec3& bodyMomentum, int axis, Real coe
     if (angle == 0.0) {
         return;
     }
-    const Vec3 e = unitAxis(axis);
-    orientation = orientation * axisAngle(e, angle);
-    bodyMomentum = axisAngle(e, -angle) * bodyMomentum;
+    // The body turns by +angle and its momentum by -angle: one rotation and its conjugate.
+    const Quat turn = axisAngle(unitAxis(axis), angle);
+    orientation = orientation * turn;
+    bodyMomentum = glm::conjugate(turn) * bodyMomentum;
 }
 
 /// The flow of H = |Pi|^2 / (2 I_ref) for time h: a rotation about Pi itself, which leaves the
