@@ -36,8 +36,12 @@ constexpr Real kImpactBand = 2.0;
 /// body's motion over the rest of the step is dropped, so a pathological case (sub-steps that
 /// keep shrinking) costs simulated time instead of sinking and the push-out's energy (4.3b).
 constexpr int kMaxSubsteps = 32;
-/// Time-of-impact searches in one sub-step: each searches the motion re-solved for the shorter
-/// sub-step the previous one found (the fixed point is usually reached in a few).
+/// Time-of-impact searches in one step, over all its sub-steps: each searches the motion
+/// re-solved for the shorter sub-step the previous one found (the fixed point is usually reached
+/// in a few, a bisection (4.3a) in about 20). Each search costs a contact solve, so a step whose
+/// searches are spent ends with the sub-step in hand, like the last sub-step of (4.3b): the
+/// cost of one body's step is bounded (a millimetre plate with friction 5 at dt = 0.1 s took 390
+/// solves per step, most of them capped, with 64 searches allowed per sub-step).
 constexpr int kMaxImpactSearches = 64;
 /// The bisection of (4.3a) stops once the clear and the crossing sub-steps agree to this fraction.
 constexpr Real kBisectionResolution = 1e-9;
@@ -386,6 +390,7 @@ void World::advanceSequential(BodyId id, Slot& slot, Real dt, StepEvents& events
     const ContactSolveSettings solveSettings{m_settings.restitutionThreshold,
                                              m_settings.solverIterations};
     Real elapsed = 0.0;
+    int searchesLeft = kMaxImpactSearches;
     for (int substep = 0;; ++substep) {
         const Real remaining = dt - elapsed;
         // 1. Detect the vertices touching the ground now.
@@ -423,7 +428,8 @@ void World::advanceSequential(BodyId id, Slot& slot, Real dt, StepEvents& events
         Real clear = 0.0;
         Real crossing = std::numeric_limits<Real>::infinity();
         bool tauIsClear = false;
-        for (int search = 0; m_ground && search < kMaxImpactSearches; ++search) {
+        while (m_ground && searchesLeft > 0) {
+            --searchesLeft;
             const SubstepMotion motion =
                 substepMotion(body, positionStartVelocity(velocityStart, body, contacts), tau);
             const Real impact = timeOfImpact(motion, body.shape.halfExtents(), *m_ground,
@@ -492,8 +498,9 @@ void World::advanceSequential(BodyId id, Slot& slot, Real dt, StepEvents& events
         if (!(elapsed < dt)) {
             break;
         }
-        // (4.3b): the last sub-step allowed ends the step, short of dt if it must.
-        if (substep + 1 >= kMaxSubsteps) {
+        // (4.3b): the last sub-step allowed, or the one that spent the step's searches, ends
+        // the step, short of dt if it must.
+        if (substep + 1 >= kMaxSubsteps || searchesLeft == 0) {
             break;
         }
     }
