@@ -366,17 +366,23 @@ bool World::clearOfGroundForStep(const Body& body, Real dt) const
            2.0 * m_settings.contactTolerance + 1e-12 * (radius + std::abs(centreHeight));
 }
 
-void World::advanceInFlight(Slot& slot, Real dt) const
+void World::moveFreely(Body& body, Real dt) const
 {
-    // The stages of advanceSequential for a body that touches nothing, with the same operations
-    // in the same order, so the result is the same to the bit: gravity, then the position and
-    // rotation over the step.
-    Body& body = slot.body;
+    // Gravity, then the position and rotation over dt, its energy change booked to the
+    // integrator.
     const Real energyStart = energyOf(body);
     const Vec3 velocityStart = body.linearVelocity;
     body.linearVelocity += m_settings.gravity * dt;
     integratePositions(body, velocityStart, dt);
     bookContact(body, ContactWork{}, energyOf(body) - energyStart, false);
+}
+
+void World::advanceInFlight(Slot& slot, Real dt) const
+{
+    // The stages of advanceSequential for a body that touches nothing, with the same operations
+    // in the same order, so the result is the same to the bit: gravity, then the position and
+    // rotation over the step.
+    moveFreely(slot.body, dt);
     slot.warmStart = WarmStartCache{};
     slot.touchingGround = false;
 }
@@ -510,11 +516,7 @@ void World::advanceAverage(BodyId id, Slot& slot, Real dt, StepEvents& events)
 {
     Body& body = slot.body;
     // The handouts' order: move freely for the whole step, then detect and respond.
-    const Real energyStart = energyOf(body);
-    const Vec3 velocityStart = body.linearVelocity;
-    body.linearVelocity += m_settings.gravity * dt;
-    integratePositions(body, velocityStart, dt);
-    bookContact(body, ContactWork{}, energyOf(body) - energyStart, false);
+    moveFreely(body, dt);
     ContactManifold contacts = contactsOf(id);
     const bool wasTouching = slot.touchingGround;
     slot.touchingGround = contacts.pointCount > 0;

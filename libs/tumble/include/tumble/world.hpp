@@ -169,6 +169,8 @@ private:
     /// True when no vertex can come within the contact tolerance of the ground during a step
     /// of dt, whatever the body's rotation (or when there is no ground).
     [[nodiscard]] bool clearOfGroundForStep(const Body& body, Real dt) const;
+    /// Gravity and integration over dt with nothing touching, booked to the energy ledger.
+    void moveFreely(Body& body, Real dt) const;
     /// The sequential step of a body clear of the ground: gravity and integration only.
     void advanceInFlight(Slot& slot, Real dt) const;
     void advanceSequential(BodyId id, Slot& slot, Real dt, StepEvents& events);

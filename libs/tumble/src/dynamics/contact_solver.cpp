@@ -285,11 +285,9 @@ void clampFrictionToCone(Body& body, const SolverFrame& frame, std::span<SolverP
 void solvePoints(Body& body, const SolverFrame& frame, std::span<SolverPoint> points,
                  Real targetScale, int iterations, Real convergence)
 {
-    Real speedScale = 0.0;
-    for (const SolverPoint& point : points) {
-        speedScale = std::max(speedScale, glm::length(body.linearVelocity +
-                                                      glm::cross(body.angularVelocity, point.r)));
-    }
+    // Kept for the speed scale of (5.13), needed only if the sweeps reach the cap.
+    const Vec3 linearVelocityStart = body.linearVelocity;
+    const Vec3 angularVelocityStart = body.angularVelocity;
     for (int iteration = 0; iteration < iterations; ++iteration) {
         Real largestChange = 0.0;
         Real largestImpulse = 0.0;
@@ -322,6 +320,11 @@ void solvePoints(Body& body, const SolverFrame& frame, std::span<SolverPoint> po
         solveNormalExactly(body, frame, points, targetScale);
     };
     endWithExactNormals();
+    Real speedScale = 0.0;
+    for (const SolverPoint& point : points) {
+        speedScale = std::max(speedScale, glm::length(linearVelocityStart +
+                                                      glm::cross(angularVelocityStart, point.r)));
+    }
     if (!frictionDrivesSliding(body, frame, points, speedScale)) {
         return;
     }
