@@ -80,6 +80,16 @@ RotationSplit chooseSplit(const Vec3& inertiaBody)
 
 void rotateExact(Quat& orientation, Vec3& angularVelocity, const Vec3& inertiaBody, Real dt)
 {
+    if (inertiaBody.x == inertiaBody.y && inertiaBody.y == inertiaBody.z) {
+        // A spherical top (a cube): w = L / I stays constant and the flow (2.5) is one rotation
+        // by |w| dt about it, in the world frame; w is left exactly as it was.
+        const Real speed = glm::length(angularVelocity);
+        if (speed > 0.0) {
+            orientation =
+                glm::normalize(axisAngle(angularVelocity / speed, speed * dt) * orientation);
+        }
+        return;
+    }
     const RotationSplit split = chooseSplit(inertiaBody);
     const Real referenceInertia = inertiaBody[split.reference];
     // (2.4): body-frame angular momentum Pi = I0 R^T w; the world momentum R Pi is what every
