@@ -5,6 +5,7 @@
 #include "body_state.hpp"
 
 #include <cmath>
+#include <limits>
 
 namespace tumble {
 
@@ -196,6 +197,30 @@ Real rotationRateBound(const Quat& orientation, const Vec3& angularVelocity,
     const Real axisTurn =
         2.0 * std::min(1.0, 0.5 * h * rateMomentum) * (rateNear1 + rateFar + rateNear2);
     return rateMomentum + rateNear1 + rateFar + rateNear2 + axisTurn;
+}
+
+Real rotationCurvatureBound(const Quat& orientation, const Vec3& angularVelocity,
+                            const Vec3& inertiaBody, Integrator integrator)
+{
+    if (integrator != Integrator::Exact) {
+        return std::numeric_limits<Real>::infinity();
+    }
+    const Real spinSquared = glm::dot(angularVelocity, angularVelocity);
+    if (inertiaBody.x == inertiaBody.y && inertiaBody.y == inertiaBody.z) {
+        // A spherical top: w is constant.
+        return spinSquared;
+    }
+    const RotationSplit split = chooseSplit(inertiaBody);
+    if (split.nearCoefficient != 0.0) {
+        return std::numeric_limits<Real>::infinity();
+    }
+    // (4.4a): a symmetric top turns at a = |Pi| / I_ref about the fixed L and at
+    // c = c_far Pi_far about its own axis e, so w = a L/|L| + c e with |w| constant and
+    // dw/ds = c (w x e), of size at most a |c|.
+    const Vec3 bodyMomentum = inertiaBody * (glm::conjugate(orientation) * angularVelocity);
+    const Real precession = glm::length(bodyMomentum) / inertiaBody[split.reference];
+    const Real axialRate = std::abs(split.farCoefficient * bodyMomentum[split.far]);
+    return spinSquared + precession * axialRate;
 }
 
 Real rotationEnergyErrorBound(const Quat& orientation, const Vec3& angularVelocity,

@@ -13,6 +13,13 @@ namespace tumble {
 void integrateRotation(Quat& orientation, Vec3& angularVelocity, const Vec3& inertiaBody, Real dt,
                        Integrator integrator);
 
+/// Where the pose integrateRotation gives after a step of length s is the exact torque-free flow
+/// (Integrator::Exact and two or three equal moments), an upper bound on |dw/ds| + |w|^2 along
+/// it, 1/s^2: a material point at offset r then accelerates by at most that times |r| (4.4a).
+/// Infinity for the other poses, whose second derivative in s has no such simple bound.
+Real rotationCurvatureBound(const Quat& orientation, const Vec3& angularVelocity,
+                            const Vec3& inertiaBody, Integrator integrator);
+
 /// An upper bound on the rate at which the pose integrateRotation gives after a step of length s
 /// changes with s, for every s in [0, maxStep], rad/s (used by the time of impact,
 /// docs/physics/04-detection.md, (4.4)).
