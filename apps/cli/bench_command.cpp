@@ -3,8 +3,10 @@
 #include "bench_command.hpp"
 
 #include "console.hpp"
+#include "throw_batch.hpp"
 
 #include "tumble/scenario/scenario.hpp"
+#include "tumble/scenario/throw.hpp"
 
 #ifdef TUMBLE_HAS_PEERS
 #include "peer.hpp"
@@ -197,6 +199,24 @@ void printRows(const std::vector<BenchRow>& rows)
     }
 }
 
+/// Times `throws` throws of the die (seed 1) on `threads` threads, as `tumble throw` runs them,
+/// and prints one row of the dice table.
+void printDiceRow(const scenario::Scenario& die, long throws, int threads)
+{
+    std::vector<scenario::ThrowOutcome> outcomes(static_cast<std::size_t>(throws));
+    const auto start = std::chrono::steady_clock::now();
+    runThrows(die, 1, 0, outcomes, threads, false, throws);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const long settled = std::count_if(outcomes.begin(), outcomes.end(),
+                                       [](const scenario::ThrowOutcome& outcome) {
+                                           return outcome.settled;
+                                       });
+    const double rate = static_cast<double>(throws) / seconds;
+    std::printf("%-4s %-14s %8ld %7d %10.3f %10.0f %9ld %14.1f\n", "D", "dice_cube", throws,
+                threads, seconds, rate, settled, 1e5 / rate);
+}
+
 } // namespace
 
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options)
@@ -213,9 +233,13 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options)
         ->check(CLI::PositiveNumber);
     command->add_flag("--peers", options.peers,
                       "Also run Bullet, ODE and MuJoCo (those built in) on the same bodies");
+    command->add_option("--throws", options.throws,
+                        "Throws of dice_cube.toml timed at each thread count (0: none)")
+        ->check(CLI::Range(0L, 100000000L));
     options.scenarioDir = TUMBLE_SCENARIO_DIR;
     command->add_option("--scenarios", options.scenarioDir,
-                        "Folder with part3_task4_friction.toml and s4_tumbling_cuboids.toml");
+                        "Folder with part3_task4_friction.toml, s4_tumbling_cuboids.toml and "
+                        "dice_cube.toml");
     return command;
 }
 
@@ -272,6 +296,16 @@ int benchCommand(const BenchOptions& options)
     printRows(rows);
     for (const std::string& line : peerSettings) {
         std::printf("settings of %s\n", line.c_str());
+    }
+    if (options.throws > 0) {
+        // Throughput of `tumble throw` (docs/dice.md): whole throws, each run until the die rests.
+        const scenario::Scenario die =
+            scenario::loadScenario(options.scenarioDir + "/dice_cube.toml", {});
+        std::printf("%-4s %-14s %8s %7s %10s %10s %9s %14s\n", "scen", "scenario", "throws",
+                    "threads", "seconds", "throws/s", "settled", "s per 100000");
+        for (const int threads : options.threads) {
+            printDiceRow(die, options.throws, threads > 0 ? threads : defaultThreadCount());
+        }
     }
     struct rusage usage {};
     getrusage(RUSAGE_SELF, &usage);
