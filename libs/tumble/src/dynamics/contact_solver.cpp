@@ -527,6 +527,19 @@ PreparedSolve prepare(const Body& body, const ContactManifold& manifold, Real re
     return solve;
 }
 
+/// Takes a solve back to its start: a solve changes only the points' impulses and friction
+/// shifts, so zeroing them is the prepared state again (without copying eight points).
+void restartFromZero(PreparedSolve& solve)
+{
+    for (int i = 0; i < solve.count; ++i) {
+        SolverPoint& point = solve.points[i];
+        point.normalImpulse = 0.0;
+        point.tangentImpulse1 = 0.0;
+        point.tangentImpulse2 = 0.0;
+        point.frictionShift = 0.0;
+    }
+}
+
 /// Copies the accumulated impulses into the manifold and sums them into the outcome.
 void publish(const PreparedSolve& solve, const Body& body, ContactManifold& manifold,
              ImpactOutcome& outcome)
@@ -578,13 +591,11 @@ ImpactOutcome resolveImpact(Body& body, ContactManifold& manifold,
     outcome.kineticEnergyBefore = body.kineticEnergy();
     const Vec3 velocityBefore = body.linearVelocity;
     const Vec3 angularVelocityBefore = body.angularVelocity;
-    const PreparedSolve prepared =
+    PreparedSolve solve =
         prepare(body, manifold, body.material.restitution, settings.restitutionThreshold);
-    for (int i = 0; i < prepared.count; ++i) {
-        outcome.restitutionApplied |= prepared.points[i].targetNormalVelocity > 0.0;
+    for (int i = 0; i < solve.count; ++i) {
+        outcome.restitutionApplied |= solve.points[i].targetNormalVelocity > 0.0;
     }
-
-    PreparedSolve solve = prepared;
     solvePoints(body, solve.frame, std::span(solve.points.data(), solve.count), 1.0,
                 settings.iterations, kImpactConvergence, true);
     // (5.6): Newton's law at several points, or with sticking friction, can create energy. If it
@@ -597,14 +608,14 @@ ImpactOutcome resolveImpact(Body& body, ContactManifold& manifold,
             const Real scale = 0.5 * (keep + reject);
             body.linearVelocity = velocityBefore;
             body.angularVelocity = angularVelocityBefore;
-            solve = prepared;
+            restartFromZero(solve);
             solvePoints(body, solve.frame, std::span(solve.points.data(), solve.count), scale,
                         settings.iterations, kImpactConvergence, true);
             (body.kineticEnergy() > allowed ? reject : keep) = scale;
         }
         body.linearVelocity = velocityBefore;
         body.angularVelocity = angularVelocityBefore;
-        solve = prepared;
+        restartFromZero(solve);
         solvePoints(body, solve.frame, std::span(solve.points.data(), solve.count), keep,
                     settings.iterations, kImpactConvergence, true);
     }
@@ -634,7 +645,6 @@ ContactWork solveRestingContact(Body& body, ContactManifold& manifold,
             -std::max(0.0, -manifold.points[i].penetration) / tau;
         solve.points[i].restitution = RestitutionState::None;
     }
-    const PreparedSolve fromZero = solve;
     const Vec3 freeVelocity = body.linearVelocity;
     const Vec3 freeAngularVelocity = body.angularVelocity;
     // (5.12): with targets <= 0 the solution never has more kinetic energy than the body had
@@ -676,7 +686,7 @@ ContactWork solveRestingContact(Body& body, ContactManifold& manifold,
         }
         body.linearVelocity = freeVelocity;
         body.angularVelocity = freeAngularVelocity;
-        solve = fromZero;
+        restartFromZero(solve);
         for (int i = 0; i < solve.count && !withFriction; ++i) {
             solve.points[i].friction = 0.0;
         }
