@@ -157,27 +157,29 @@ void solveFriction(SolverPoint& point, Real v1, Real v2, Real& impulse1, Real& i
     // and from the right the tangent of the concave function lies above it, so the first step
     // lands left of the root.
     Real shift = point.frictionShift;
+    Real magnitude = freeMagnitude;
+    const Real inverseBound = 1.0 / bound;
     for (int iteration = 0; iteration < 50; ++iteration) {
         const Real a = k[0] + shift;
         const Real d = k[3] + shift;
         const Real invDeterminant = 1.0 / (a * d - k[1] * k[1]);
         impulse1 = -(d * free1 - k[1] * free2) * invDeterminant;
         impulse2 = -(a * free2 - k[1] * free1) * invDeterminant;
-        const Real magnitude = planarLength(impulse1, impulse2);
+        magnitude = planarLength(impulse1, impulse2);
         if (std::abs(magnitude - bound) <= 1e-15 * bound) {
             break;
         }
-        // d|lambda|/ds = -lambda^T (K + s 1)^-1 lambda / |lambda|.
+        // d|lambda|/ds = -lambda^T (K + s 1)^-1 lambda / |lambda|, so with phi = 1/|lambda| -
+        // 1/bound the step phi / phi' is |lambda|^2 (1 - |lambda| / bound) / quadratic.
         const Real quadratic =
             (d * impulse1 * impulse1 - 2.0 * k[1] * impulse1 * impulse2 + a * impulse2 * impulse2) *
             invDeterminant;
-        const Real value = 1.0 / magnitude - 1.0 / bound;
-        const Real slope = quadratic / (magnitude * magnitude * magnitude);
-        shift = std::max(0.0, shift - value / slope);
+        shift = std::max(0.0, shift - magnitude * magnitude * (1.0 - magnitude * inverseBound) /
+                                          quadratic);
     }
     point.frictionShift = shift;
     // Rounding aside the impulse is on the circle; put it there exactly.
-    const Real scale = bound / planarLength(impulse1, impulse2);
+    const Real scale = bound / magnitude;
     impulse1 *= scale;
     impulse2 *= scale;
 }
