@@ -509,7 +509,12 @@ void World::advanceSequential(BodyId id, Slot& slot, Real dt, StepEvents& events
             break;
         }
     }
-    slot.touchingGround = contactsOf(id).pointCount > 0;
+    // The predicate of detection (4.1) without building the manifold: some vertex within the
+    // contact tolerance.
+    slot.touchingGround =
+        m_ground && lowestVertexHeight({body.position, body.orientation},
+                                       body.shape.halfExtents(),
+                                       *m_ground) <= m_settings.contactTolerance;
 }
 
 void World::advanceAverage(BodyId id, Slot& slot, Real dt, StepEvents& events)

@@ -47,31 +47,32 @@ constexpr Real kAndersonConditioning = 1e-10;
 Real planarLength(Real a, Real b) { return std::sqrt(a * a + b * b); }
 
 /// Per-vertex data of a solve: the offset, the effective masses and the accumulated impulses
-/// (symbols of docs/physics/05-normal-impulse.md and 06-friction.md).
+/// (symbols of docs/physics/05-normal-impulse.md and 06-friction.md). No member initialisers, so
+/// a solve's unused points cost nothing; preparePoint value-initialises the ones it uses.
 struct SolverPoint {
-    Vec3 r{0.0};
+    Vec3 r;
     /// I^-1 (r x n), I^-1 (r x t1), I^-1 (r x t2): the change of angular velocity per unit
     /// impulse along each direction, computed once so a sweep applies an impulse with two
     /// scaled additions instead of a cross product and a matrix product (Catto 2005).
-    Vec3 angularPerNormal{0.0};
-    Vec3 angularPerTangent1{0.0};
-    Vec3 angularPerTangent2{0.0};
-    Real normalMass = 0.0;
+    Vec3 angularPerNormal;
+    Vec3 angularPerTangent1;
+    Vec3 angularPerTangent2;
+    Real normalMass;
     /// The 2x2 tangential matrix K_t (6.3) and its inverse, the effective mass; row-major.
-    std::array<Real, 4> tangentK{};
-    std::array<Real, 4> tangentMass{};
+    std::array<Real, 4> tangentK;
+    std::array<Real, 4> tangentMass;
     /// Target normal velocity: -e vn^- for an impact faster than the threshold, else 0 (5.3).
-    Real targetNormalVelocity = 0.0;
-    Real friction = 0.0;
+    Real targetNormalVelocity;
+    Real friction;
     /// Velocity of the material point at the vertex when the solve was prepared.
-    Vec3 velocityBefore{0.0};
-    RestitutionState restitution = RestitutionState::None;
-    Real normalImpulse = 0.0;
-    Real tangentImpulse1 = 0.0;
-    Real tangentImpulse2 = 0.0;
+    Vec3 velocityBefore;
+    RestitutionState restitution;
+    Real normalImpulse;
+    Real tangentImpulse1;
+    Real tangentImpulse2;
     /// The shift s of the last friction solve on the cone's edge (6.4), where the next sweep's
     /// Newton iteration starts: the edge solution moves little from sweep to sweep.
-    Real frictionShift = 0.0;
+    Real frictionShift;
 };
 
 struct SolverFrame {
@@ -91,7 +92,7 @@ SolverFrame makeFrame(const Vec3& normal)
 SolverPoint preparePoint(const Body& body, const SolverFrame& frame, const Vec3& r,
                          Real restitution, Real restitutionThreshold)
 {
-    SolverPoint point;
+    SolverPoint point{};
     point.r = r;
     const Mat3& invInertia = body.invInertiaWorld;
     // (5.2): K_n = 1/m + (r x n) . I^-1 (r x n).
@@ -510,23 +511,28 @@ void solvePoints(Body& body, const SolverFrame& frame, std::span<SolverPoint> po
     endWithExactNormals();
 }
 
+/// The points of one solve. Only the first `count` are ever written or read: the others are
+/// left uninitialised, since zeroing eight points (2 kB) cost more than preparing four.
 struct PreparedSolve {
+    PreparedSolve() = default;
+    PreparedSolve(const PreparedSolve&) = delete;
+    PreparedSolve& operator=(const PreparedSolve&) = delete;
+
     SolverFrame frame;
-    std::array<SolverPoint, 8> points{};
+    std::array<SolverPoint, 8> points;
     int count = 0;
 };
 
-PreparedSolve prepare(const Body& body, const ContactManifold& manifold, Real restitution,
-                      Real restitutionThreshold)
+void prepare(PreparedSolve& solve, const Body& body, const ContactManifold& manifold,
+             Real restitution, Real restitutionThreshold)
 {
-    PreparedSolve solve;
     solve.frame = makeFrame(manifold.normal);
+    solve.count = 0;
     for (int i = 0; i < manifold.pointCount; ++i) {
         solve.points[solve.count++] =
             preparePoint(body, solve.frame, manifold.points[i].position - body.position,
                          restitution, restitutionThreshold);
     }
-    return solve;
 }
 
 /// Takes a solve back to its start: a solve changes only the points' impulses and friction
@@ -593,8 +599,8 @@ ImpactOutcome resolveImpact(Body& body, ContactManifold& manifold,
     outcome.kineticEnergyBefore = body.kineticEnergy();
     const Vec3 velocityBefore = body.linearVelocity;
     const Vec3 angularVelocityBefore = body.angularVelocity;
-    PreparedSolve solve =
-        prepare(body, manifold, body.material.restitution, settings.restitutionThreshold);
+    PreparedSolve solve;
+    prepare(solve, body, manifold, body.material.restitution, settings.restitutionThreshold);
     for (int i = 0; i < solve.count; ++i) {
         outcome.restitutionApplied |= solve.points[i].targetNormalVelocity > 0.0;
     }
@@ -636,7 +642,8 @@ ContactWork solveRestingContact(Body& body, ContactManifold& manifold,
     TUMBLE_ASSERT(!(tau <= 0.0));
     // Prepared before gravity acts, so a body at rest on a slope sees no sliding and keeps the
     // static coefficient.
-    PreparedSolve solve = prepare(body, manifold, 0.0, settings.restitutionThreshold);
+    PreparedSolve solve;
+    prepare(solve, body, manifold, 0.0, settings.restitutionThreshold);
     body.linearVelocity += gravityImpulsePerMass;
     if (solve.count == 0) {
         return ContactWork{};
