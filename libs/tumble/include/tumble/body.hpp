@@ -61,11 +61,14 @@ struct Body {
     [[nodiscard]] Vec3 angularMomentum() const { return inertiaWorld() * angularVelocity; }
     /// Linear momentum m v.
     [[nodiscard]] Vec3 linearMomentum() const { return mass * linearVelocity; }
-    /// Translational plus rotational kinetic energy, J.
+    /// Translational plus rotational kinetic energy, J. The rotational part w . I w / 2 is
+    /// taken in the body frame, sum_k I0_k (R^T w)_k^2 / 2: one quaternion rotation instead of
+    /// building R I0 R^T (the ledger asks for it several times per sub-step).
     [[nodiscard]] Real kineticEnergy() const
     {
+        const Vec3 bodySpin = glm::conjugate(orientation) * angularVelocity;
         return 0.5 * mass * lengthSquared(linearVelocity) +
-               0.5 * glm::dot(angularVelocity, angularMomentum());
+               0.5 * glm::dot(inertiaBody() * bodySpin, bodySpin);
     }
     /// Potential energy in a uniform gravity field, J, zero at the world origin: -m g . x.
     [[nodiscard]] Real potentialEnergy(const Vec3& gravity) const
