@@ -10,7 +10,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 tumble="${TUMBLE:-build/apps/cli/tumble}"
-throws="${THROWS:-1500}"
+throws="${THROWS:-10000}"
 seed="${SEED:-1}"
 edge=0.02
 out_dir=docs/images
