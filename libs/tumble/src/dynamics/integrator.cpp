@@ -108,7 +108,7 @@ void rotateExact(Quat& orientation, Vec3& angularVelocity, const Vec3& inertiaBo
     // (2.7a): the split's energy error grows like (turn per composition)^2, so a body spun up
     // past kMaxTurnPerSplit per step (an impact at the tip of a thin rod can do it) is turned in
     // several compositions; ordinary steps turn far less and take exactly one. The turn rate is
-    // the bound of rotationRateBound's pieces, so the time of impact stays consistent.
+    // the bound of rotationRates' pieces, so the time of impact stays consistent.
     const Real turnRate = glm::length(bodyMomentum) *
                           (1.0 / referenceInertia + std::abs(split.nearCoefficient) +
                            std::abs(split.farCoefficient));
@@ -160,11 +160,13 @@ void integrateRotation(Quat& orientation, Vec3& angularVelocity, const Vec3& ine
     }
 }
 
-Real rotationRateBound(const Quat& orientation, const Vec3& angularVelocity,
-                       const Vec3& inertiaBody, Real maxStep, Integrator integrator)
+RotationRates rotationRates(const Quat& orientation, const Vec3& angularVelocity,
+                            const Vec3& inertiaBody, Real maxStep, Integrator integrator)
 {
+    RotationRates rates;
     if (integrator == Integrator::Handout) {
-        return glm::length(angularVelocity);
+        rates.aboutAnyAxis = glm::length(angularVelocity);
+        return rates;
     }
     // (4.4): the pose after s is the composition (2.7) A(s/2) B(s/2) C(s) B(s/2) A(s/2); its
     // turning rate in s is at most the sum of the rates at which the pieces' angles (and the last
@@ -196,7 +198,12 @@ Real rotationRateBound(const Quat& orientation, const Vec3& angularVelocity,
     const Real rateMomentum = momentum / inertiaBody[split.reference];
     const Real axisTurn =
         2.0 * std::min(1.0, 0.5 * h * rateMomentum) * (rateNear1 + rateFar + rateNear2);
-    return rateMomentum + rateNear1 + rateFar + rateNear2 + axisTurn;
+    rates.aboutAnyAxis = rateMomentum + axisTurn;
+    rates.aboutNearAxis = rateNear1 + rateNear2;
+    rates.aboutFarAxis = rateFar;
+    rates.nearAxis = split.near;
+    rates.farAxis = split.far;
+    return rates;
 }
 
 Real rotationCurvatureBound(const Quat& orientation, const Vec3& angularVelocity,

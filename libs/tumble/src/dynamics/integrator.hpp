@@ -20,11 +20,22 @@ void integrateRotation(Quat& orientation, Vec3& angularVelocity, const Vec3& ine
 Real rotationCurvatureBound(const Quat& orientation, const Vec3& angularVelocity,
                             const Vec3& inertiaBody, Integrator integrator);
 
-/// An upper bound on the rate at which the pose integrateRotation gives after a step of length s
-/// changes with s, for every s in [0, maxStep], rad/s (used by the time of impact,
-/// docs/physics/04-detection.md, (4.4)).
-Real rotationRateBound(const Quat& orientation, const Vec3& angularVelocity,
-                       const Vec3& inertiaBody, Real maxStep, Integrator integrator);
+/// Upper bounds on the rates at which the pieces of the pose integrateRotation gives after a
+/// step of length s turn, for every s in [0, maxStep], rad/s, sorted by the axis they turn about
+/// (used by the time of impact, docs/physics/04-detection.md, (4.4)): about an axis that may
+/// point anywhere (the momentum Pi, or a handout rotation about w), and about the body's own near
+/// and far axes of the split (2.7), whose vertices stay close to those axes for a long thin body.
+struct RotationRates {
+    Real aboutAnyAxis = 0.0;
+    Real aboutNearAxis = 0.0;
+    Real aboutFarAxis = 0.0;
+    int nearAxis = 1;
+    int farAxis = 2;
+
+    [[nodiscard]] Real total() const { return aboutAnyAxis + aboutNearAxis + aboutFarAxis; }
+};
+RotationRates rotationRates(const Quat& orientation, const Vec3& angularVelocity,
+                            const Vec3& inertiaBody, Real maxStep, Integrator integrator);
 
 /// (2.7b): a bound on how far the kinetic energy of Integrator::Exact can move from its start
 /// value over torque-free rotation in steps of length h, to leading order in h, J: the splitting
