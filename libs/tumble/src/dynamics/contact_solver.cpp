@@ -341,8 +341,10 @@ public:
                 std::array<Real, 3> next{};
                 for (std::size_t c = 0; c < 3; ++c) {
                     const std::size_t j = 3 * i + c;
-                    next[c] = image[j] - gamma1 * (image[j] - image1[j]) -
-                              gamma2 * (image1[j] - image2[j]);
+                    next[c] = image[j] - gamma1 * (image[j] - image1[j]);
+                    if (m_depth >= 2) {
+                        next[c] -= gamma2 * (image1[j] - image2[j]);
+                    }
                 }
                 SolverPoint& point = points[i];
                 next[0] = std::max(0.0, next[0]);
@@ -358,8 +360,8 @@ public:
         }
         // The newest becomes the middle entry, the middle one the oldest (slot 2).
         if (m_depth >= 1) {
-            m_images[2] = m_images[m_newest];
-            m_residuals[2] = m_residuals[m_newest];
+            std::copy_n(m_images[m_newest].begin(), m_size, m_images[2].begin());
+            std::copy_n(m_residuals[m_newest].begin(), m_size, m_residuals[2].begin());
         }
         m_newest ^= 1;
         m_residualNorm = residualNorm;
@@ -403,11 +405,14 @@ private:
         return false;
     }
 
-    ImpulseVector m_start{};
+    /// Not initialised (a solve that converges in a sweep or two, most of them, would pay for
+    /// zeroing a kilobyte): only the first m_size entries are used, each written first, and the
+    /// slot-2 entries only at depth two, after the copy that fills them.
+    ImpulseVector m_start;
     /// Images and residuals of the last sweeps: m_newest (0 or 1) holds the last, slot 2 the one
     /// before; the other of 0 and 1 receives the sweep in hand.
-    std::array<ImpulseVector, 3> m_images{};
-    std::array<ImpulseVector, 3> m_residuals{};
+    std::array<ImpulseVector, 3> m_images;
+    std::array<ImpulseVector, 3> m_residuals;
     std::size_t m_size = 0;
     Real m_residualNorm = std::numeric_limits<Real>::infinity();
     int m_newest = 0;
