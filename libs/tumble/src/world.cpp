@@ -398,6 +398,9 @@ void World::advanceSequential(BodyId id, Slot& slot, Real dt, StepEvents& events
                                              m_settings.solverIterations};
     Real elapsed = 0.0;
     int searches = 0;
+    // The body's energy now, carried from stage to stage: each booking's "after" is the next
+    // one's "before" (the ledger's energies are a sizeable part of a resting step).
+    Real energy = energyOf(body);
     for (int substep = 0;; ++substep) {
         const Real remaining = dt - elapsed;
         // 1. Detect the vertices touching the ground now.
@@ -407,20 +410,19 @@ void World::advanceSequential(BodyId id, Slot& slot, Real dt, StepEvents& events
         //    time of impact, so the impact happens at the plane.
         if (approachSpeed(body, contacts) > kImpactSpeed) {
             if (lowestApproachingHeight(body, contacts) <= kImpactBand * impactTolerance()) {
-                const Real energyBefore = energyOf(body);
                 const ImpactOutcome outcome = resolveImpact(body, contacts, solveSettings);
-                bookContact(body, outcome.work, energyOf(body) - energyBefore, true);
+                const Real energyAfterImpact = energyOf(body);
+                bookContact(body, outcome.work, energyAfterImpact - energy, true);
                 recordImpact(contacts, outcome, m_time + elapsed, events);
                 recordContacts(ContactPhase::Impact, contacts, m_time + elapsed, events);
-                const Real energyBeforeSettling = energyOf(body);
                 settleOnPlane(body, contacts);
-                bookCorrection(body, energyBeforeSettling);
+                energy = bookCorrection(body, energyAfterImpact);
             } else {
                 dropApproachingPoints(body, contacts);
             }
         }
         // 3. Integrate velocities over the sub-step: gravity, then resting contact.
-        const Real energyStart = energyOf(body);
+        const Real energyStart = energy;
         const Vec3 velocityStart = body.linearVelocity;
         const Vec3 angularVelocityStart = body.angularVelocity;
         Real tau = remaining;
@@ -486,13 +488,13 @@ void World::advanceSequential(BodyId id, Slot& slot, Real dt, StepEvents& events
         recordContacts(ContactPhase::Resting, contacts, m_time + elapsed, events);
         // 5. Integrate positions and orientation.
         integratePositions(body, positionStartVelocity(velocityStart, body, contacts), tau);
-        bookContact(body, restingWork, energyOf(body) - energyStart, false);
+        const Real energyAfterMotion = energyOf(body);
+        bookContact(body, restingWork, energyAfterMotion - energyStart, false);
         // 6. Keep the vertices that carried load on the plane, and push the body out of any
         //    penetration left by the sub-step.
-        const Real energyBeforeCorrection = energyOf(body);
         keepLoadBearingOnPlane(body, contacts);
         correctPenetration(body);
-        bookCorrection(body, energyBeforeCorrection);
+        energy = bookCorrection(body, energyAfterMotion);
         // (not "tau == remaining": with a NaN state that never holds and the step never ended)
         if (!(tau < remaining)) {
             break;
@@ -581,9 +583,11 @@ void World::bookContact(Body& body, const ContactWork& work, Real energyChange, 
     }
 }
 
-void World::bookCorrection(Body& body, Real energyBefore) const
+Real World::bookCorrection(Body& body, Real energyBefore) const
 {
-    body.ledger.removedByCorrection += energyBefore - energyOf(body);
+    const Real energyAfter = energyOf(body);
+    body.ledger.removedByCorrection += energyBefore - energyAfter;
+    return energyAfter;
 }
 
 void World::recordContacts(ContactPhase phase, const ContactManifold& contacts, Real time,

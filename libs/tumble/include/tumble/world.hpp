@@ -179,7 +179,9 @@ private:
     [[nodiscard]] ContactWork integrateVelocities(Body& body, ContactManifold& contacts, Real tau,
                                                   const WarmStartCache& warmStart) const;
     void bookContact(Body& body, const ContactWork& work, Real energyChange, bool impact) const;
-    void bookCorrection(Body& body, Real energyBefore) const;
+    /// Books the energy a position correction changed since `energyBefore` and returns the
+    /// body's energy after it.
+    Real bookCorrection(Body& body, Real energyBefore) const;
     void recordContacts(ContactPhase phase, const ContactManifold& contacts, Real time,
                         StepEvents& events) const;
     /// The start velocity the position update uses (docs/physics/02-integration.md, (2.2a)).
