@@ -51,15 +51,14 @@ Transform poseAt(const SubstepMotion& motion, Real s)
 
 namespace {
 
-/// (4.4): how far from the body axis `axis` a vertex can be while a piece of the pose turns about
+/// (4.4): how far from the body axis `axis` a vertex (at most `radius` from the centre) can be while a piece of the pose turns about
 /// it: its distance from the axis, plus how far the pieces applied after it can carry it away
 /// (turns about the axis itself keep the distance; the others, `otherRate` in all over the
 /// sub-step, move a point by at most their angle times the half diagonal), and never more than
 /// the half diagonal. A long thin body spinning fast about its long axis moves its vertices at
 /// that spin times their small distance from the axis, not times the half diagonal.
-Real axisReach(const Vec3& halfExtents, int axis, Real otherRate, Real tau)
+Real axisReach(const Vec3& halfExtents, Real radius, int axis, Real otherRate, Real tau)
 {
-    const Real radius = glm::length(halfExtents);
     Vec3 across = halfExtents;
     across[axis] = 0.0;
     return std::min(radius, glm::length(across) + radius * tau * otherRate);
@@ -135,15 +134,15 @@ Real timeOfImpact(const SubstepMotion& motion, const Vec3& halfExtents, const Pl
     const Vec3 n = Plane::normal();
     const Real normalSpeed = std::max(std::abs(glm::dot(n, motion.velocityStart)),
                                       std::abs(glm::dot(n, motion.velocityEnd)));
-    const RotationRates rates =
-        rotationRates(motion.start.orientation, motion.angularVelocity, motion.inertiaBody,
-                      motion.tau, motion.integrator);
+    const RotationBounds rates =
+        rotationBounds(motion.start.orientation, motion.angularVelocity, motion.inertiaBody,
+                       motion.tau, motion.integrator);
     const Real radius = glm::length(halfExtents);
     const Real approachBound =
         normalSpeed + rates.aboutAnyAxis * radius +
-        rates.aboutNearAxis * axisReach(halfExtents, rates.nearAxis,
+        rates.aboutNearAxis * axisReach(halfExtents, radius, rates.nearAxis,
                                         rates.aboutAnyAxis + rates.aboutFarAxis, motion.tau) +
-        rates.aboutFarAxis * axisReach(halfExtents, rates.farAxis,
+        rates.aboutFarAxis * axisReach(halfExtents, radius, rates.farAxis,
                                        rates.aboutAnyAxis + rates.aboutNearAxis, motion.tau);
     if (approachBound == 0.0) {
         return motion.tau;
@@ -151,9 +150,7 @@ Real timeOfImpact(const SubstepMotion& motion, const Vec3& halfExtents, const Pl
     // (4.4a): where the pose is the exact flow, |d^2 h_i/ds^2| <= |n . a| + (|dw/ds| + |w|^2) r.
     const Real curvature =
         std::abs(glm::dot(n, motion.velocityEnd - motion.velocityStart)) / motion.tau +
-        rotationCurvatureBound(motion.start.orientation, motion.angularVelocity,
-                               motion.inertiaBody, motion.integrator) *
-            radius;
+        rates.curvature * radius;
     if (!std::isfinite(curvature)) {
         return linearAdvancement(motion, halfExtents, plane, touchingVertices, tolerance,
                                  approachBound);

@@ -108,7 +108,7 @@ void rotateExact(Quat& orientation, Vec3& angularVelocity, const Vec3& inertiaBo
     // (2.7a): the split's energy error grows like (turn per composition)^2, so a body spun up
     // past kMaxTurnPerSplit per step (an impact at the tip of a thin rod can do it) is turned in
     // several compositions; ordinary steps turn far less and take exactly one. The turn rate is
-    // the bound of rotationRates' pieces, so the time of impact stays consistent.
+    // the bound of rotationBounds' pieces, so the time of impact stays consistent.
     const Real turnRate = glm::length(bodyMomentum) *
                           (1.0 / referenceInertia + std::abs(split.nearCoefficient) +
                            std::abs(split.farCoefficient));
@@ -160,10 +160,10 @@ void integrateRotation(Quat& orientation, Vec3& angularVelocity, const Vec3& ine
     }
 }
 
-RotationRates rotationRates(const Quat& orientation, const Vec3& angularVelocity,
-                            const Vec3& inertiaBody, Real maxStep, Integrator integrator)
+RotationBounds rotationBounds(const Quat& orientation, const Vec3& angularVelocity,
+                              const Vec3& inertiaBody, Real maxStep, Integrator integrator)
 {
-    RotationRates rates;
+    RotationBounds rates;
     if (integrator == Integrator::Handout) {
         rates.aboutAnyAxis = glm::length(angularVelocity);
         return rates;
@@ -203,31 +203,14 @@ RotationRates rotationRates(const Quat& orientation, const Vec3& angularVelocity
     rates.aboutFarAxis = rateFar;
     rates.nearAxis = split.near;
     rates.farAxis = split.far;
+    if (split.nearCoefficient == 0.0) {
+        // (4.4a): a symmetric (or spherical) top turns at a = |Pi| / I_ref about the fixed L and
+        // at c = c_far Pi_far about its own axis e, so w = a L/|L| + c e with |w| constant and
+        // dw/ds = c (w x e), of size at most a |c|.
+        rates.curvature = glm::dot(angularVelocity, angularVelocity) +
+                          rateMomentum * std::abs(split.farCoefficient * bodyMomentum[split.far]);
+    }
     return rates;
-}
-
-Real rotationCurvatureBound(const Quat& orientation, const Vec3& angularVelocity,
-                            const Vec3& inertiaBody, Integrator integrator)
-{
-    if (integrator != Integrator::Exact) {
-        return std::numeric_limits<Real>::infinity();
-    }
-    const Real spinSquared = glm::dot(angularVelocity, angularVelocity);
-    if (inertiaBody.x == inertiaBody.y && inertiaBody.y == inertiaBody.z) {
-        // A spherical top: w is constant.
-        return spinSquared;
-    }
-    const RotationSplit split = chooseSplit(inertiaBody);
-    if (split.nearCoefficient != 0.0) {
-        return std::numeric_limits<Real>::infinity();
-    }
-    // (4.4a): a symmetric top turns at a = |Pi| / I_ref about the fixed L and at
-    // c = c_far Pi_far about its own axis e, so w = a L/|L| + c e with |w| constant and
-    // dw/ds = c (w x e), of size at most a |c|.
-    const Vec3 bodyMomentum = inertiaBody * (glm::conjugate(orientation) * angularVelocity);
-    const Real precession = glm::length(bodyMomentum) / inertiaBody[split.reference];
-    const Real axialRate = std::abs(split.farCoefficient * bodyMomentum[split.far]);
-    return spinSquared + precession * axialRate;
 }
 
 Real rotationEnergyErrorBound(const Quat& orientation, const Vec3& angularVelocity,

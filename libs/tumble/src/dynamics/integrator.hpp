@@ -2,6 +2,8 @@
 // (docs/physics/02-integration.md).
 #pragma once
 
+#include <limits>
+
 #include "tumble/body.hpp"
 #include "tumble/math.hpp"
 #include "tumble/world.hpp"
@@ -13,29 +15,28 @@ namespace tumble {
 void integrateRotation(Quat& orientation, Vec3& angularVelocity, const Vec3& inertiaBody, Real dt,
                        Integrator integrator);
 
-/// Where the pose integrateRotation gives after a step of length s is the exact torque-free flow
-/// (Integrator::Exact and two or three equal moments), an upper bound on |dw/ds| + |w|^2 along
-/// it, 1/s^2: a material point at offset r then accelerates by at most that times |r| (4.4a).
-/// Infinity for the other poses, whose second derivative in s has no such simple bound.
-Real rotationCurvatureBound(const Quat& orientation, const Vec3& angularVelocity,
-                            const Vec3& inertiaBody, Integrator integrator);
-
-/// Upper bounds on the rates at which the pieces of the pose integrateRotation gives after a
-/// step of length s turn, for every s in [0, maxStep], rad/s, sorted by the axis they turn about
-/// (used by the time of impact, docs/physics/04-detection.md, (4.4)): about an axis that may
-/// point anywhere (the momentum Pi, or a handout rotation about w), and about the body's own near
-/// and far axes of the split (2.7), whose vertices stay close to those axes for a long thin body.
-struct RotationRates {
+/// Bounds on how the pose integrateRotation gives after a step of length s changes with s, for
+/// every s in [0, maxStep] (used by the time of impact, docs/physics/04-detection.md):
+/// - (4.4) the rates, rad/s, at which the pieces of the pose turn, sorted by the axis they turn
+///   about: an axis that may point anywhere (the momentum Pi, or a handout rotation about w),
+///   and the body's own near and far axes of the split (2.7), whose vertices stay close to those
+///   axes for a long thin body;
+/// - (4.4a) where the pose is the exact torque-free flow (Integrator::Exact and two or three
+///   equal moments), |dw/ds| + |w|^2 along it, 1/s^2: a material point at offset r then
+///   accelerates by at most that times |r|. Infinity for the other poses, whose second
+///   derivative in s has no such simple bound.
+struct RotationBounds {
     Real aboutAnyAxis = 0.0;
     Real aboutNearAxis = 0.0;
     Real aboutFarAxis = 0.0;
     int nearAxis = 1;
     int farAxis = 2;
+    Real curvature = std::numeric_limits<Real>::infinity();
 
     [[nodiscard]] Real total() const { return aboutAnyAxis + aboutNearAxis + aboutFarAxis; }
 };
-RotationRates rotationRates(const Quat& orientation, const Vec3& angularVelocity,
-                            const Vec3& inertiaBody, Real maxStep, Integrator integrator);
+RotationBounds rotationBounds(const Quat& orientation, const Vec3& angularVelocity,
+                              const Vec3& inertiaBody, Real maxStep, Integrator integrator);
 
 /// (2.7b): a bound on how far the kinetic energy of Integrator::Exact can move from its start
 /// value over torque-free rotation in steps of length h, to leading order in h, J: the splitting
