@@ -371,13 +371,18 @@ bool World::clearOfGroundForStep(const Body& body, Real dt) const
     // rotation can carry a vertex over the step, its turning rate (4.4) times the half diagonal.
     // A body bouncing or rocking a little above the plane (a 2 x 6 x 2 cuboid lying flat has
     // its centre 1 m up and a half diagonal of 3.3 m) skips the search this way.
+    // (The rotation's bound costs more than the heights: a body resting on the plane, whose
+    // lowest vertex is already within the clearance, does not need it.)
+    const Real lowest = lowestVertexHeight({body.position, body.orientation},
+                                           body.shape.halfExtents(), *m_ground);
+    if (!(lowest - sink > clearance)) {
+        return false;
+    }
     const Real turn =
         dt * radius *
         rotationBounds(body.orientation, body.angularVelocity, body.inertiaBody(), dt,
                        m_settings.integrator)
             .total();
-    const Real lowest = lowestVertexHeight({body.position, body.orientation},
-                                           body.shape.halfExtents(), *m_ground);
     return lowest - turn - sink > clearance;
 }
 

@@ -156,33 +156,39 @@ void solveFriction(SolverPoint& point, Real v1, Real v2, Real& impulse1, Real& i
     }
     // Newton's method converges from any start s >= 0: from the left of the root monotonically,
     // and from the right the tangent of the concave function lies above it, so the first step
-    // lands left of the root.
+    // lands left of the root. With D = det(K + s 1) and m = adj(K + s 1) v_free the impulse is
+    // -m / D, so |lambda| = |m| / D and lambda^T (K + s 1)^-1 lambda = m^T adj(K + s 1) m / D^3:
+    // the iteration runs on m and D, one division a step, and divides by D only at the end.
     Real shift = point.frictionShift;
-    Real magnitude = freeMagnitude;
+    Real scaled1 = 0.0;
+    Real scaled2 = 0.0;
+    Real scaledMagnitude = 0.0;
     const Real inverseBound = 1.0 / bound;
     for (int iteration = 0; iteration < 50; ++iteration) {
         const Real a = k[0] + shift;
         const Real d = k[3] + shift;
-        const Real invDeterminant = 1.0 / (a * d - k[1] * k[1]);
-        impulse1 = -(d * free1 - k[1] * free2) * invDeterminant;
-        impulse2 = -(a * free2 - k[1] * free1) * invDeterminant;
-        magnitude = planarLength(impulse1, impulse2);
-        if (std::abs(magnitude - bound) <= 1e-15 * bound) {
+        const Real determinant = a * d - k[1] * k[1];
+        scaled1 = d * free1 - k[1] * free2;
+        scaled2 = a * free2 - k[1] * free1;
+        scaledMagnitude = planarLength(scaled1, scaled2);
+        const Real boundTimesDeterminant = bound * determinant;
+        if (std::abs(scaledMagnitude - boundTimesDeterminant) <= 1e-15 * boundTimesDeterminant) {
             break;
         }
         // d|lambda|/ds = -lambda^T (K + s 1)^-1 lambda / |lambda|, so with phi = 1/|lambda| -
-        // 1/bound the step phi / phi' is |lambda|^2 (1 - |lambda| / bound) / quadratic.
+        // 1/bound the step phi / phi' is |lambda|^2 (1 - |lambda| / bound) / quadratic, which in
+        // m and D is |m|^2 (D - |m| / bound) / m^T adj(K + s 1) m.
         const Real quadratic =
-            (d * impulse1 * impulse1 - 2.0 * k[1] * impulse1 * impulse2 + a * impulse2 * impulse2) *
-            invDeterminant;
-        shift = std::max(0.0, shift - magnitude * magnitude * (1.0 - magnitude * inverseBound) /
+            d * scaled1 * scaled1 - 2.0 * k[1] * scaled1 * scaled2 + a * scaled2 * scaled2;
+        shift = std::max(0.0, shift - scaledMagnitude * scaledMagnitude *
+                                          (determinant - scaledMagnitude * inverseBound) /
                                           quadratic);
     }
     point.frictionShift = shift;
-    // Rounding aside the impulse is on the circle; put it there exactly.
-    const Real scale = bound / magnitude;
-    impulse1 *= scale;
-    impulse2 *= scale;
+    // Rounding aside -m / D is on the circle; put the impulse there exactly.
+    const Real scale = -bound / scaledMagnitude;
+    impulse1 = scale * scaled1;
+    impulse2 = scale * scaled2;
 }
 
 /// (5.11): replaces the normal impulses by the exact solution of the normal problem with the
