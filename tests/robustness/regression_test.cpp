@@ -123,7 +123,7 @@ TEST(Regression, APlateStandingOnItsEdgeGainsNoEnergy)
 // corner swung down within 1e-4 s, and the motion re-solved over that short sub-step had no impact
 // at all: every sub-step advanced ~1e-4 s, and after the 32nd the rest of the step ran unsearched,
 // sank up to 0.16 m and the push-out (4.5) added 1-4 % of the energy scale. Now the sub-step is
-// bisected back up to the impact (4.3a), and the 32nd sub-step ends the step (4.3b).
+// searched back up to the impact (4.3a), and the 32nd sub-step ends the step (4.3b).
 void expectBoundedDrop(const DropCase& drop)
 {
     const DropOutcome outcome = runDrop(drop);

@@ -44,8 +44,12 @@ constexpr int kMaxSubsteps = 32;
 /// millimetre plate with friction 5 at dt = 0.1 s took 390 solves per step, most at the sweep
 /// cap, with 64 searches per sub-step and 32 sub-steps).
 constexpr int kMaxImpactSearches = 64;
-/// The bisection of (4.3a) stops once the clear and the crossing sub-steps agree to this fraction.
+/// The search of (4.3a) stops once the clear and the crossing sub-steps agree to this fraction.
 constexpr Real kBisectionResolution = 1e-9;
+/// (4.3a) aims the end height of the arriving vertex between the impact tolerance (below which
+/// the time of impact calls the sub-step crossing) and the impact band (at or below which a
+/// clear sub-step ends the search): half way, in impact tolerances.
+constexpr Real kBracketAim = 1.5;
 /// Slots per batch: the unit step() hands to a thread. Fixed, so the batches (and the order in
 /// which their events are merged) do not depend on the number of threads; small enough that a
 /// few thousand bodies make enough batches to balance two to sixteen threads, large enough that
@@ -113,6 +117,62 @@ void settleOnPlane(Body& body, const ContactManifold& manifold)
         body.position -= lowest * manifold.normal;
     }
 }
+
+/// (4.3a): the sub-step's length between the longest known to be clear and the shortest known
+/// to cross, each with the end height above the aim of the lowest free vertex under its own
+/// re-solved motion, and the next length to try: false position on that height, with the
+/// Illinois halving (an end kept twice in a row has its height halved, so the other end cannot
+/// stall), or the midpoint where the heights do not straddle the aim (a vertex that dips below
+/// the plane and comes back up within the crossing sub-step).
+class SubstepBracket {
+public:
+    void markClear(Real length, Real heightAboveAim)
+    {
+        m_clear = length;
+        m_clearHeight = heightAboveAim;
+        if (m_lastMoved > 0) {
+            m_crossingHeight *= 0.5;
+        }
+        m_lastMoved = 1;
+    }
+
+    void markCrossing(Real length, Real heightAboveAim)
+    {
+        m_crossing = length;
+        m_crossingHeight = heightAboveAim;
+        if (m_lastMoved < 0) {
+            m_clearHeight *= 0.5;
+        }
+        m_lastMoved = -1;
+    }
+
+    [[nodiscard]] Real clear() const { return m_clear; }
+    [[nodiscard]] bool hasCrossing() const { return std::isfinite(m_crossing); }
+    [[nodiscard]] bool closed() const
+    {
+        return m_crossing - m_clear <= kBisectionResolution * m_crossing;
+    }
+
+    [[nodiscard]] Real next() const
+    {
+        if (m_clearHeight > 0.0 && m_crossingHeight < 0.0) {
+            const Real interpolated = m_clear + (m_crossing - m_clear) * m_clearHeight /
+                                                    (m_clearHeight - m_crossingHeight);
+            if (interpolated > m_clear && interpolated < m_crossing) {
+                return interpolated;
+            }
+        }
+        return 0.5 * (m_clear + m_crossing);
+    }
+
+private:
+    Real m_clear = 0.0;
+    Real m_crossing = std::numeric_limits<Real>::infinity();
+    Real m_clearHeight = 0.0;
+    Real m_crossingHeight = 0.0;
+    /// +1 when the clear end moved last, -1 the crossing end, 0 neither yet.
+    int m_lastMoved = 0;
+};
 
 } // namespace
 
@@ -451,57 +511,60 @@ void World::advanceSequential(BodyId id, Slot& slot, Real dt, StepEvents& events
         //    The resting-contact solve depends on tau, so the motion over a shortened sub-step
         //    is not the one searched: search again until no vertex crosses within it. When the
         //    motion re-solved for the shortened sub-step no longer comes near the plane, the
-        //    impact belonged to the longer solve only: bisect between the longest sub-step
+        //    impact belonged to the longer solve only: search between the longest sub-step
         //    known to be clear and the shortest known to cross (04-detection.md, (4.3a)).
         const std::uint8_t touching = vertexMask(contacts);
-        Real clear = 0.0;
-        Real crossing = std::numeric_limits<Real>::infinity();
+        const Vec3 halfExtents = body.shape.halfExtents();
+        const Real aim = kBracketAim * impactTolerance();
+        SubstepBracket bracket;
         bool tauIsClear = false;
         for (int search = 0; m_ground && search < kMaxImpactSearches; ++search) {
             ++searches;
             const SubstepMotion motion =
                 substepMotion(body, positionStartVelocity(velocityStart, body, contacts), tau);
-            const Real impact = timeOfImpact(motion, body.shape.halfExtents(), *m_ground,
-                                             touching, impactTolerance());
+            const Real impact =
+                timeOfImpact(motion, halfExtents, *m_ground, touching, impactTolerance());
             Real next = 0.0;
             if (impact >= tau) {
-                clear = tau;
                 // Done when nothing crossed, when the vertex found ends the sub-step at the
                 // impact tolerance (a real impact, met next sub-step), or when the bracket is
-                // closed.
-                // (The end height costs a pose: it is only needed when there is a bracket.)
-                if (!std::isfinite(crossing) ||
-                    crossing - clear <= kBisectionResolution * crossing ||
-                    freeClearance(motion, body.shape.halfExtents(), *m_ground, touching, tau) <=
-                        kImpactBand * impactTolerance()) {
+                // closed. (The end height costs a pose: it is only needed with a bracket.)
+                if (!bracket.hasCrossing()) {
                     tauIsClear = true;
                     break;
                 }
-                next = 0.5 * (clear + crossing);
-            } else if (freeClearance(motion, body.shape.halfExtents(), *m_ground, touching,
-                                     impact) > impactTolerance()) {
+                const Real endHeight = freeClearance(motion, halfExtents, *m_ground, touching, tau);
+                bracket.markClear(tau, endHeight - aim);
+                if (endHeight <= kImpactBand * impactTolerance() || bracket.closed()) {
+                    tauIsClear = true;
+                    break;
+                }
+                next = bracket.next();
+            } else if (freeClearance(motion, halfExtents, *m_ground, touching, impact) >
+                       impactTolerance()) {
                 // The search ran out of advances before any vertex arrived (one grazes the
                 // plane): the motion is only known to be clear until then. Shorten the sub-step
                 // to it, or, once a longer sub-step is known to be clear, take that one: going
-                // back to bisecting alternated between the two up to the search cap, and every
-                // undecided search costs its full advances.
-                if (clear > 0.0) {
+                // back to the bracket alternated between the two up to the search cap, and
+                // every undecided search costs its full advances.
+                if (bracket.clear() > 0.0) {
                     break;
                 }
                 next = impact;
             } else {
-                crossing = tau;
-                next = clear > 0.0 ? 0.5 * (clear + crossing) : impact;
+                bracket.markCrossing(
+                    tau, freeClearance(motion, halfExtents, *m_ground, touching, tau) - aim);
+                next = bracket.clear() > 0.0 ? bracket.next() : impact;
             }
             body.linearVelocity = velocityStart;
             body.angularVelocity = angularVelocityStart;
             tau = next;
             restingWork = integrateVelocities(body, contacts, tau, slot.warmStart);
         }
-        if (!tauIsClear && clear > 0.0) {
+        if (!tauIsClear && bracket.clear() > 0.0) {
             body.linearVelocity = velocityStart;
             body.angularVelocity = angularVelocityStart;
-            tau = clear;
+            tau = bracket.clear();
             restingWork = integrateVelocities(body, contacts, tau, slot.warmStart);
         }
         slot.warmStart = makeWarmStart(contacts, tau);
