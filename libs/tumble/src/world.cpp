@@ -334,11 +334,12 @@ void World::applyImpulse(BodyId id, const Vec3& impulse, const Vec3& worldPoint)
 ContactManifold World::contactsOf(BodyId id) const
 {
     const Body& body = this->body(id);
-    ContactManifold manifold;
-    if (m_ground) {
-        manifold = collideCuboidPlane({body.position, body.orientation}, body.shape.halfExtents(),
-                                      *m_ground, m_settings.contactTolerance);
-    }
+    // Built in place (a manifold is over a kilobyte: an empty one assigned over was a zeroing
+    // and a copy per sub-step).
+    ContactManifold manifold =
+        m_ground ? collideCuboidPlane({body.position, body.orientation}, body.shape.halfExtents(),
+                                      *m_ground, m_settings.contactTolerance)
+                 : ContactManifold{};
     manifold.body = id;
     return manifold;
 }
@@ -463,7 +464,8 @@ void World::advanceInFlight(Slot& slot, Real dt) const
     // in the same order, so the result is the same to the bit: gravity, then the position and
     // rotation over the step.
     moveFreely(slot.body, dt);
-    slot.warmStart = WarmStartCache{};
+    // No vertex in contact: the solve reads a cache's rates only for the vertices it lists.
+    slot.warmStart.vertices = 0;
     slot.touchingGround = false;
 }
 
