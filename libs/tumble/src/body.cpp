@@ -6,6 +6,7 @@ namespace tumble {
 Body makeBody(const BodyDef& def)
 {
     Body body;
+    body.motion = def.motion;
     body.shape = def.shape;
     body.mass = def.mass;
     body.position = def.position;
@@ -13,12 +14,22 @@ Body makeBody(const BodyDef& def)
     body.linearVelocity = def.linearVelocity;
     body.angularVelocity = def.angularVelocity;
     body.material = def.material;
+    body.materialGiven = def.materialGiven;
     refreshMassProperties(body);
     return body;
 }
 
 void refreshMassProperties(Body& body)
 {
+    // a static body is infinitely heavy: no impulse moves it
+    if (body.isStatic()) {
+        body.invMass = 0.0;
+        body.invInertiaBody = Vec3(0.0);
+        body.linearVelocity = Vec3(0.0);
+        body.angularVelocity = Vec3(0.0);
+        refreshWorldInertia(body);
+        return;
+    }
     body.invMass = 1.0 / body.mass;
     body.invInertiaBody = cuboidInverseInertiaDiagonal(body.mass, body.shape.size);
     refreshWorldInertia(body);

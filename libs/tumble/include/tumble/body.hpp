@@ -6,10 +6,18 @@
 #include "tumble/math.hpp"
 #include "tumble/shape.hpp"
 
+#include <cstdint>
+
 namespace tumble {
 
-/// Everything needed to create a dynamic cuboid body; copied in by World::createBody.
+/// Whether a body moves. A static body is fixed geometry (a wall, a tray, a step): no mass, no
+/// velocity, never moved by gravity or contact; it joins no island (docs/physics/10-broad-phase.md).
+enum class BodyMotion : std::uint8_t { Dynamic, Static };
+
+/// Everything needed to create a cuboid body; copied in by World::createBody.
 struct BodyDef {
+    /// Default BodyMotion::Dynamic.
+    BodyMotion motion = BodyMotion::Dynamic;
     /// The cuboid. Default: the 2 x 2 x 2 cube.
     Cuboid shape{};
     /// Mass, kg, > 0. Default 1.
@@ -22,13 +30,17 @@ struct BodyDef {
     Vec3 linearVelocity{0.0};
     /// Angular velocity, world frame, rad/s. Default 0.
     Vec3 angularVelocity{0.0};
-    /// Restitution and friction against the ground. Default Material{}.
+    /// Restitution and friction. Default Material{}.
     Material material{};
+    /// False for a static body that gives no material of its own: its contacts then take the
+    /// dynamic body's (docs/physics/11-island-solver.md, (11.7)). Default true.
+    bool materialGiven = true;
 };
 
 /// State of one body as World keeps it. Users read it through World::body(id) and change it
 /// through World's setters, which keep the derived quantities (inverse inertia) consistent.
 struct Body {
+    BodyMotion motion = BodyMotion::Dynamic;
     Cuboid shape{};
     Real mass = 1.0;
     Real invMass = 1.0;
@@ -41,6 +53,8 @@ struct Body {
     Vec3 linearVelocity{0.0};
     Vec3 angularVelocity{0.0};
     Material material{};
+    /// See BodyDef::materialGiven.
+    bool materialGiven = true;
     /// True once the body has stayed slow in contact for WorldSettings::sleepTime; a sleeping
     /// body is not integrated until something wakes it.
     bool asleep = false;
@@ -49,6 +63,7 @@ struct Body {
     /// Where the body's energy went since its creation.
     EnergyLedger ledger{};
 
+    [[nodiscard]] bool isStatic() const { return motion == BodyMotion::Static; }
     [[nodiscard]] Mat3 rotation() const { return glm::mat3_cast(orientation); }
     /// Body-frame inertia diagonal I0, kg m^2.
     [[nodiscard]] Vec3 inertiaBody() const { return cuboidInertiaDiagonal(mass, shape.size); }

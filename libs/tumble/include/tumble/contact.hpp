@@ -31,7 +31,8 @@ const char* restitutionStateName(RestitutionState state);
 
 /// One cuboid vertex touching or below the ground.
 struct ContactPoint {
-    /// Index of the vertex (see cuboidVertices).
+    /// Index of the vertex (see cuboidVertices), or -1 for a point of a contact between two
+    /// bodies (made by a pair of features, not one vertex).
     int vertex = 0;
     /// World coordinates of the vertex, m.
     Vec3 position{0.0};
@@ -53,6 +54,10 @@ struct ContactPoint {
 /// The vertices of one cuboid that touch the ground (within a tolerance).
 struct ContactManifold {
     BodyId body{};
+    /// The other body of a contact between two bodies; null for the ground or a plane.
+    BodyId other{};
+    /// Index of the plane (World::planes) when the other side is a plane; -1 otherwise.
+    int plane = -1;
     /// Ground normal, pointing into the body's side of the plane.
     Vec3 normal{0.0, 1.0, 0.0};
     std::array<ContactPoint, 8> points{};

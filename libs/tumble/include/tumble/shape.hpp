@@ -1,9 +1,11 @@
-// Shapes (the cuboid a body is, the ground plane) and the cuboid's mass properties.
+// Shapes (the cuboid a body is, the ground plane, static half-spaces) and the cuboid's mass properties.
 #pragma once
 
+#include "tumble/material.hpp"
 #include "tumble/math.hpp"
 
 #include <array>
+#include <optional>
 
 namespace tumble {
 
@@ -22,6 +24,16 @@ struct Plane {
     Real height = 0.0;
 
     [[nodiscard]] static Vec3 normal() { return Vec3(0.0, 1.0, 0.0); }
+};
+
+/// A static half-space of any orientation: the points x with n . (x - point) <= 0 are inside.
+struct StaticPlane {
+    /// A point on the boundary plane, m.
+    Vec3 point{0.0};
+    /// Outward unit normal. Default +y.
+    Vec3 normal{0.0, 1.0, 0.0};
+    /// The plane's own material, or none: its contacts then take the dynamic body's.
+    std::optional<Material> material;
 };
 
 /// Diagonal of the body-frame inertia tensor of a solid cuboid, kg m^2

@@ -4,7 +4,7 @@
 
 #include "tumble/math.hpp"
 #include "tumble/shape.hpp"
-#include "tumble/world.hpp"
+#include "tumble/settings.hpp"
 
 #include <cstdint>
 

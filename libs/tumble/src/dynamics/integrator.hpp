@@ -6,7 +6,7 @@
 
 #include "tumble/body.hpp"
 #include "tumble/math.hpp"
-#include "tumble/world.hpp"
+#include "tumble/settings.hpp"
 
 namespace tumble {
 

@@ -1,0 +1,44 @@
+// What a World keeps for each body besides the Body users see: the slot behind its id and the
+// state the step carries from one step to the next.
+#pragma once
+
+#include "tumble/body.hpp"
+#include "tumble/contact.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace tumble {
+
+/// Last step's impulses at one point of a contact of the island solver, per second, kept by the
+/// contact's owner (the lower dynamic body of two, or the dynamic one) for warm starting (11.6).
+struct CachedContactPoint {
+    /// The other side: a body's slot index, or kPlaneSide + plane index, or kGroundSide.
+    std::uint32_t other = 0;
+    std::uint32_t id = 0;
+    Real normalRate = 0.0;
+    Vec3 frictionRate{0.0};
+};
+
+/// Side keys of the static half-spaces in CachedContactPoint::other.
+constexpr std::uint32_t kGroundSide = 0xffffffffu;
+constexpr std::uint32_t kPlaneSide = 0x80000000u;
+
+struct BodySlot {
+    Body body;
+    std::uint32_t generation = 0;
+    bool alive = false;
+    /// Whether any vertex touched the ground at the end of the last step.
+    bool touchingGround = false;
+    /// End of the first step of the current slow spell, s.
+    Real slowSince = 0.0;
+    /// Last step's resting-contact impulses, to warm-start the next.
+    WarmStartCache warmStart{};
+    /// Whether the body was solved with others (or with static geometry other than the ground)
+    /// in the last step.
+    bool coupled = false;
+    /// Last step's impulses of the contacts this body owns in the island solver.
+    std::vector<CachedContactPoint> contactCache;
+};
+
+} // namespace tumble

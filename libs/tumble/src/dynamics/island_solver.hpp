@@ -1,0 +1,45 @@
+// Sequential impulses over the contact points of an island of touching bodies: prepare, warm
+// start, solve (docs/physics/11-island-solver.md).
+#pragma once
+
+#include "dynamics/contact_constraint.hpp"
+
+#include <span>
+
+namespace tumble {
+
+/// What a constraint's target is for (11.4).
+enum class ConstraintTarget : std::uint8_t {
+    /// An impact: Newton's restitution target -e vn where the approach is faster than the
+    /// threshold, else 0.
+    Impact,
+    /// A sub-step of length tau: 0 for a point in contact, -gap / tau for one still apart, so it
+    /// may close the gap within the sub-step but not cross it (speculative contact).
+    Substep,
+};
+
+struct ConstraintTargetSettings {
+    ConstraintTarget target = ConstraintTarget::Substep;
+    /// Sub-step length, s (for ConstraintTarget::Substep).
+    Real tau = 0.0;
+    /// A point with a gap at most this is in contact, m.
+    Real touchingGap = 1e-4;
+    /// Approach speeds below this get no restitution, m/s.
+    Real restitutionThreshold = 0.05;
+};
+
+/// Effective masses (11.2), (11.3), tangent basis, friction coefficient and target (11.4) of a
+/// constraint whose bodies, normal, offsets, gap and material are set. Keeps its impulses.
+void prepareConstraint(ContactConstraint& constraint, std::span<const SolverBody> bodies,
+                       const ConstraintTargetSettings& settings);
+
+/// Applies the constraints' impulses to their bodies (warm starting, (11.6)).
+void warmStart(std::span<const ContactConstraint> constraints, std::span<SolverBody> bodies);
+
+/// Gauss-Seidel sweeps of normal (11.4) then friction (11.5) impulses with accumulated clamping,
+/// until no impulse changes by more than `convergence` times the largest, or `iterations`
+/// sweeps. Returns the sweeps done.
+int solveConstraints(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
+                     int iterations, Real convergence);
+
+} // namespace tumble
