@@ -37,8 +37,9 @@ struct ContactAxis {
 Real projectedRadius(const CuboidFrame& box, const Vec3& axis);
 
 /// Tests the 15 axes (9.2)-(9.3). Empty if some axis separates the boxes by more than `margin`;
-/// otherwise the axis of greatest separation, biased towards faces and towards A, with edge axes
-/// nearly along a face normal replaced by that face (9.5).
+/// otherwise the axis of greatest separation (minus the penetration depth (9.4)), biased
+/// towards faces and towards A, with edge axes nearly along a face normal replaced by that face
+/// (9.5).
 std::optional<ContactAxis> findContactAxis(const CuboidFrame& a, const CuboidFrame& b,
                                            Real margin);
 
