@@ -125,6 +125,24 @@ TEST(BroadPhase, IncrementalUpdatesAfterSmallMovesMatchAllPairs)
     }
 }
 
+TEST(BroadPhase, BoxPassingARowMatchesAllPairs)
+{
+    // one box walks along a row of unit cubes spaced 1.5 apart, passing one cube every few
+    // calls: the insertion sort moves it one place at a time
+    std::vector<BroadPhaseProxy> proxies;
+    for (std::uint32_t i = 0; i < 40; ++i) {
+        const Vec3 low(1.5 * i, 0.1 * (i % 3), 0);
+        proxies.push_back({Aabb{low, low + Vec3(1)}, i, i % 4 != 0});
+    }
+    proxies[0].movable = true;
+    BroadPhase broadPhase;
+    for (int step = 0; step < 150; ++step) {
+        ASSERT_EQ(sweptPairs(broadPhase, proxies), allOverlappingPairs(proxies)) << step;
+        proxies[0].box.min.x += 0.4;
+        proxies[0].box.max.x += 0.4;
+    }
+}
+
 TEST(BroadPhase, TeleportsAndChangesOfCountMatchAllPairs)
 {
     // large moves exceed the insertion sort's budget; a new count starts a new order
