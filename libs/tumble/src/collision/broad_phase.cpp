@@ -1,5 +1,5 @@
 // Sort and sweep along the axis of largest spread (docs/physics/10-broad-phase.md;
-// Baraff 1992, ch. 7 "coherence"; Ericson 2005, 7.5.2).
+// Baraff 1992 on coherence; Ericson 2005, 7.5).
 #include "collision/broad_phase.hpp"
 
 #include <algorithm>
@@ -113,7 +113,7 @@ void BroadPhase::sortEntries()
 void BroadPhase::sweep()
 {
     // every box meets the boxes that start along the axis before it ends; the other two axes
-    // decide (Ericson 2005, 7.5.2)
+    // decide (Ericson 2005, 7.5)
     m_pairs.clear();
     const int axis = m_axis;
     const std::size_t count = m_entries.size();

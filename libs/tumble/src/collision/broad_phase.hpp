@@ -19,7 +19,8 @@ struct BroadPhaseProxy {
     bool movable = true;
 };
 
-/// Two proxy (or, in islands and colouring, body) indices with a < b.
+/// Two proxy indices with a < b, as the broad phase reports them; islands and colouring read
+/// the same pair as two body indices, in either order.
 struct ProxyPair {
     std::uint32_t a = 0;
     std::uint32_t b = 0;

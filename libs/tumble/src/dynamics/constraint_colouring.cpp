@@ -30,10 +30,10 @@ ConstraintColours colourConstraints(std::span<const ProxyPair> constraints,
         const bool movesB = !isStatic[constraint.b];
         const std::uint64_t taken = (movesA ? coloursOfBody[constraint.a] : 0) |
                                     (movesB ? coloursOfBody[constraint.b] : 0);
-        const std::uint64_t free = allowed & ~taken;
+        const std::uint64_t available = allowed & ~taken;
         std::uint32_t colour = overflowColour;
-        if (free != 0) {
-            colour = static_cast<std::uint32_t>(std::countr_zero(free));
+        if (available != 0) {
+            colour = static_cast<std::uint32_t>(std::countr_zero(available));
             const std::uint64_t bit = std::uint64_t{1} << colour;
             coloursOfBody[constraint.a] |= movesA ? bit : 0;
             coloursOfBody[constraint.b] |= movesB ? bit : 0;

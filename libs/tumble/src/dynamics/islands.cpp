@@ -1,4 +1,4 @@
-// Islands by union-find with path halving and union by size (Tarjan 1975; Cormen et al. ch. 21;
+// Islands by union-find with path halving and union by size (Tarjan and van Leeuwen 1984;
 // docs/physics/10-broad-phase.md, (10.4)).
 #include "dynamics/islands.hpp"
 
