@@ -1,0 +1,135 @@
+// Sort and sweep along the axis of largest spread (docs/physics/10-broad-phase.md;
+// Baraff 1992 on coherence; Ericson 2005, 7.5).
+#include "collision/broad_phase.hpp"
+
+#include <algorithm>
+#include <cstddef>
+
+namespace tumble {
+namespace {
+
+/// Sweep order: by the low end along the sweep axis, then by proxy index, a strict total order,
+/// so the sorted sequence is unique and does not depend on the order it was sorted from.
+template <typename Entry>
+bool sweepsBefore(const Entry& first, const Entry& second, int axis)
+{
+    const Real firstMin = first.box.min[axis];
+    const Real secondMin = second.box.min[axis];
+    return firstMin < secondMin || (firstMin == secondMin && first.proxy < second.proxy);
+}
+
+/// Moves allowed to the insertion sort, per entry, before it gives way to std::sort. Boxes that
+/// pass a few others need fewer; a pile whose layers share one low end, jittering, reorders
+/// each layer at random, and then the moves made before the hand-over (at most 2n, against the
+/// roughly n log2 n comparisons of std::sort) are all that the kept order costs.
+constexpr std::size_t kInsertionMovesPerEntry = 2;
+
+} // namespace
+
+int axisOfLargestSpread(std::span<const BroadPhaseProxy> proxies)
+{
+    if (proxies.empty()) {
+        return 0;
+    }
+    // the mean first, then the spread about it: two passes, so large coordinates do not cancel
+    Vec3 mean(0.0);
+    for (const BroadPhaseProxy& proxy : proxies) {
+        mean += 0.5 * (proxy.box.min + proxy.box.max);
+    }
+    mean /= static_cast<Real>(proxies.size());
+    Vec3 spread(0.0);
+    for (const BroadPhaseProxy& proxy : proxies) {
+        const Vec3 offset = 0.5 * (proxy.box.min + proxy.box.max) - mean;
+        spread += offset * offset;
+    }
+    int axis = 0;
+    for (int candidate = 1; candidate < 3; ++candidate) {
+        if (spread[candidate] > spread[axis]) {
+            axis = candidate;
+        }
+    }
+    return axis;
+}
+
+void BroadPhase::update(std::span<const BroadPhaseProxy> proxies)
+{
+    refreshEntries(proxies, axisOfLargestSpread(proxies));
+    sortEntries();
+    sweep();
+}
+
+void BroadPhase::refreshEntries(std::span<const BroadPhaseProxy> proxies, int axis)
+{
+    const bool keptOrderFits = m_entries.size() == proxies.size() && axis == m_axis;
+    m_axis = axis;
+    if (!keptOrderFits) {
+        // a new set or a new axis: start from the input order, std::sort does the rest
+        m_entries.resize(proxies.size());
+        for (std::size_t i = 0; i < proxies.size(); ++i) {
+            m_entries[i].proxy = static_cast<std::uint32_t>(i);
+        }
+    }
+    // the kept order with this step's boxes
+    for (Entry& entry : m_entries) {
+        const BroadPhaseProxy& proxy = proxies[entry.proxy];
+        entry.box = proxy.box;
+        entry.movable = proxy.movable;
+    }
+    if (!keptOrderFits) {
+        sortFromScratch();
+    }
+}
+
+void BroadPhase::sortFromScratch()
+{
+    const int axis = m_axis;
+    std::sort(m_entries.begin(), m_entries.end(),
+              [axis](const Entry& a, const Entry& b) { return sweepsBefore(a, b, axis); });
+}
+
+void BroadPhase::sortEntries()
+{
+    // insertion sort from the kept order: near-linear when few boxes change places
+    const int axis = m_axis;
+    const std::size_t budget = kInsertionMovesPerEntry * m_entries.size();
+    std::size_t moves = 0;
+    for (std::size_t i = 1; i < m_entries.size(); ++i) {
+        const Entry moving = m_entries[i];
+        std::size_t slot = i;
+        while (slot > 0 && sweepsBefore(moving, m_entries[slot - 1], axis)) {
+            m_entries[slot] = m_entries[slot - 1];
+            --slot;
+            ++moves;
+        }
+        m_entries[slot] = moving;
+        if (moves > budget) {
+            // the boxes moved far (a teleport, a shuffled input): the rest as a whole
+            sortFromScratch();
+            return;
+        }
+    }
+}
+
+void BroadPhase::sweep()
+{
+    // every box meets the boxes that start along the axis before it ends; the other two axes
+    // decide (Ericson 2005, 7.5)
+    m_pairs.clear();
+    const int axis = m_axis;
+    const std::size_t count = m_entries.size();
+    for (std::size_t i = 0; i < count; ++i) {
+        const Entry& first = m_entries[i];
+        const Real end = first.box.max[axis];
+        for (std::size_t j = i + 1; j < count && m_entries[j].box.min[axis] <= end; ++j) {
+            const Entry& second = m_entries[j];
+            if ((first.movable || second.movable) && overlaps(first.box, second.box)) {
+                m_pairs.push_back(ProxyPair{std::min(first.proxy, second.proxy),
+                                            std::max(first.proxy, second.proxy)});
+            }
+        }
+    }
+    // proxy order, not sweep order, so the pairs depend on the proxies alone
+    std::sort(m_pairs.begin(), m_pairs.end());
+}
+
+} // namespace tumble

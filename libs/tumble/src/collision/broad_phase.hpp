@@ -1,0 +1,68 @@
+// Sort and sweep: the pairs of overlapping proxy boxes, from a sorted order kept between steps
+// (docs/physics/10-broad-phase.md; docs/decisions/0006-broad-phase.md).
+#pragma once
+
+#include "collision/aabb.hpp"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace tumble {
+
+/// One body's box as the broad phase sees it.
+struct BroadPhaseProxy {
+    Aabb box;
+    /// The body the box belongs to; carried for the caller, unused by the sweep.
+    std::uint32_t body = 0;
+    /// False for a static body: its box pairs only with movable boxes.
+    bool movable = true;
+};
+
+/// Two proxy indices with a < b, as the broad phase reports them; islands and colouring read
+/// the same pair as two body indices, in either order.
+struct ProxyPair {
+    std::uint32_t a = 0;
+    std::uint32_t b = 0;
+
+    friend auto operator<=>(const ProxyPair&, const ProxyPair&) = default;
+};
+
+/// Finds the overlapping pairs of a span of proxies. The proxies are sorted along one axis by
+/// the low end of their boxes and swept; the order is kept, so when the boxes barely move the
+/// next sort is an insertion sort of near-linear cost. The result depends only on the proxies.
+class BroadPhase {
+public:
+    /// Finds the pairs of `proxies` whose boxes overlap (touching counts) and of which at least
+    /// one is movable.
+    void update(std::span<const BroadPhaseProxy> proxies);
+
+    /// The pairs of the last update: proxy indices a < b, sorted lexicographically, each once.
+    std::span<const ProxyPair> pairs() const { return m_pairs; }
+
+    /// The world axis (0, 1, 2) of the last sweep: the one of largest spread of the box centres.
+    int sweepAxis() const { return m_axis; }
+
+private:
+    /// A proxy's box and flags, copied in sweep order so the sweep reads memory in sequence.
+    struct Entry {
+        Aabb box;
+        std::uint32_t proxy = 0;
+        bool movable = true;
+    };
+
+    void refreshEntries(std::span<const BroadPhaseProxy> proxies, int axis);
+    void sortEntries();
+    void sortFromScratch();
+    void sweep();
+
+    std::vector<Entry> m_entries;
+    std::vector<ProxyPair> m_pairs;
+    int m_axis = 0;
+};
+
+/// The axis (0, 1, 2) along which the centres of the boxes vary most (largest variance); ties
+/// go to the lower axis.
+int axisOfLargestSpread(std::span<const BroadPhaseProxy> proxies);
+
+} // namespace tumble
