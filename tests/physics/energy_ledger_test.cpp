@@ -18,7 +18,7 @@ Real imbalance(const World& world, BodyId id, Real scale)
 {
     const Body& body = world.body(id);
     const EnergyLedger& ledger = body.ledger;
-    return std::abs(world.energyOf(body) + ledger.removed() - ledger.added - ledger.initial) / scale;
+    return std::abs(ledger.imbalance(world.energyOf(body))) / scale;
 }
 
 TEST(EnergyLedger, BalancesAtEveryStepOfATumblingThrowAndTheSolverNeverAddsEnergy)

@@ -19,7 +19,8 @@ std::vector<scenario::BodySpec> tumblingCuboids(std::size_t count)
     scenario::SpawnSpec spawn;
     spawn.count = count;
     spawn.seed = 1;
-    spawn.spacing = 10.0;
+    // far enough apart that no two ever touch: each then moves as it would alone
+    spawn.spacing = 40.0;
     spawn.body.shape.size = Vec3(2, 6, 2);
     spawn.body.mass = 2.0;
     spawn.heightLow = 4.0;

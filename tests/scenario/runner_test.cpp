@@ -67,8 +67,7 @@ TEST(Runner, EveryScenarioFileRunsToItsEndFiniteWithBalancedBooksAndNoEnergyGain
                 ASSERT_TRUE(finite(body)) << "at step " << i;
                 // The energy ledger balances (docs/physics/08-energy-ledger.md, (8.1)).
                 const EnergyLedger& ledger = body.ledger;
-                const Real imbalance = runner.world().energyOf(body) + ledger.removed() -
-                                       ledger.added - ledger.initial;
+                const Real imbalance = ledger.imbalance(runner.world().energyOf(body));
                 ASSERT_LT(std::abs(imbalance),
                           1e-9 * (std::abs(ledger.initial) + std::abs(ledger.added) + 1.0))
                     << "at step " << i;

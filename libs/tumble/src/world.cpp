@@ -8,8 +8,12 @@
 #include "dynamics/rest.hpp"
 #include "step/ground_stages.hpp"
 #include "step/handout_step.hpp"
+#include "collision/aabb.hpp"
+#include "dynamics/islands.hpp"
+#include "step/coupled_step.hpp"
 #include "step/solitary_step.hpp"
 #include "step/step_events.hpp"
+#include "step/step_scratch.hpp"
 #include "tumble_assert.hpp"
 
 #include <algorithm>
@@ -57,6 +61,15 @@ void wake(Body& body)
 
 } // namespace
 
+namespace detail {
+StepScratchHandle::StepScratchHandle() : m_scratch(std::make_unique<StepScratch>()) {}
+StepScratchHandle::StepScratchHandle(const StepScratchHandle&) : StepScratchHandle() {}
+StepScratchHandle::StepScratchHandle(StepScratchHandle&& other) noexcept = default;
+StepScratchHandle& StepScratchHandle::operator=(const StepScratchHandle&) { return *this; }
+StepScratchHandle& StepScratchHandle::operator=(StepScratchHandle&& other) noexcept = default;
+StepScratchHandle::~StepScratchHandle() = default;
+} // namespace detail
+
 World::World(const WorldSettings& settings) : m_settings(settings) {}
 World::World(const World& other) = default;
 World::World(World&& other) noexcept = default;
@@ -81,6 +94,24 @@ void World::setGround(const std::optional<Plane>& ground)
     for (BodySlot& slot : m_slots) {
         wake(slot.body);
     }
+}
+
+void World::setGroundMaterial(const std::optional<Material>& material)
+{
+    m_groundMaterial = material;
+    for (BodySlot& slot : m_slots) {
+        wake(slot.body);
+    }
+}
+
+int World::addPlane(const StaticPlane& plane)
+{
+    TUMBLE_ASSERT(isFinite(plane.point) && std::abs(glm::length(plane.normal) - 1.0) < 1e-9);
+    m_planes.push_back(plane);
+    for (BodySlot& slot : m_slots) {
+        wake(slot.body);
+    }
+    return static_cast<int>(m_planes.size()) - 1;
 }
 
 BodyId World::createBody(const BodyDef& def)
@@ -221,14 +252,34 @@ int World::threadCount() const
     return m_settings.threads > 0 ? m_settings.threads : coreCount();
 }
 
+StepContext World::stepContext() const
+{
+    return StepContext{m_settings, m_ground, m_time, m_planes, m_groundMaterial};
+}
+
 void World::step(Real dt)
 {
     TUMBLE_ASSERT(std::isfinite(dt) && dt > 0.0);
+    detail::StepScratch& scratch = m_scratch.get();
+    // broad phase: pairs of bodies whose boxes, swept over the step, overlap
+    findPairs(scratch, dt);
+    // islands: awake dynamic bodies joined by those pairs; static bodies join none (10.4)
+    buildStepIslands(scratch, dt);
+    // a body whose only obstacle is the ground keeps the exact path (step/solitary_step.cpp)
+    advanceSolitaryBodies(dt);
+    // bodies that may touch each other or other static geometry (step/coupled_step.cpp)
+    advanceCoupledIslands(scratch, dt);
+    // events in body order, then island order, whatever the thread count
+    mergeEvents(scratch);
+    m_time += dt;
+}
+
+void World::advanceSolitaryBodies(Real dt)
+{
     const auto batches = static_cast<std::ptrdiff_t>(m_batchEvents.size());
-    // every body alone with the ground, in batches of fixed size: each body is advanced alone,
-    // whichever thread takes it, so the results do not depend on the schedule
+    // bodies alone in batches of fixed size, each advanced alone whichever thread takes it
     if (batches > 1 && threadCount() > 1) {
-        const int threads = threadCount();
+        [[maybe_unused]] const int threads = threadCount();
 #ifdef TUMBLE_HAVE_OPENMP
         // batches go to threads as they finish the previous one: bodies at rest cost nothing,
         // so a static split would leave threads idle
@@ -243,22 +294,20 @@ void World::step(Real dt)
             advanceBatch(static_cast<std::size_t>(batch), dt);
         }
     }
-    // events in batch order, whatever the thread count
-    mergeBatchEvents();
-    m_time += dt;
 }
 
 void World::advanceBatch(std::size_t batch, Real dt)
 {
     StepEvents& events = m_batchEvents[batch];
     events.clear();
-    const StepContext context{m_settings, m_ground, m_time};
+    const StepContext context = stepContext();
     const std::size_t end = std::min(m_slots.size(), (batch + 1) * kBatchSize);
     for (std::size_t index = batch * kBatchSize; index < end; ++index) {
         BodySlot& slot = m_slots[index];
-        if (!slot.alive || slot.body.asleep) {
+        if (!slot.alive || slot.body.asleep || slot.body.isStatic() || slot.coupled) {
             continue;
         }
+        slot.contactCache.clear();
         slot.body.ledger.impactWorkLastStep = 0.0;
         const BodyId id{static_cast<std::uint32_t>(index), slot.generation};
         if (m_settings.response == ContactResponse::Average) {
@@ -270,16 +319,22 @@ void World::advanceBatch(std::size_t batch, Real dt)
     }
 }
 
-void World::mergeBatchEvents()
+void World::mergeEvents(const detail::StepScratch& scratch)
 {
     m_collisions.clear();
     m_restEvents.clear();
     m_contactRecords.clear();
-    for (const StepEvents& events : m_batchEvents) {
+    const auto append = [&](const StepEvents& events) {
         m_collisions.insert(m_collisions.end(), events.collisions.begin(), events.collisions.end());
         m_restEvents.insert(m_restEvents.end(), events.restEvents.begin(), events.restEvents.end());
         m_contactRecords.insert(m_contactRecords.end(), events.contactRecords.begin(),
                                 events.contactRecords.end());
+    };
+    for (const StepEvents& events : m_batchEvents) {
+        append(events);
+    }
+    for (std::size_t k = 0; k < scratch.islands.size(); ++k) {
+        append(scratch.islandEvents[k]);
     }
 }
 

@@ -6,7 +6,8 @@
 
 namespace tumble {
 
-/// Running totals, J. At any time kinetic + potential + removed() - added = initial, to rounding:
+/// Running totals, J. At any time kinetic + potential + removed() - added - exchanged = initial,
+/// to rounding:
 /// every change of the body's energy is booked under exactly one heading.
 struct EnergyLedger {
     /// Kinetic plus potential energy when the body was created.
@@ -21,6 +22,9 @@ struct EnergyLedger {
     Real removedByIntegration = 0.0;
     /// Kinetic energy set to zero when the body was put to sleep at rest.
     Real removedByRest = 0.0;
+    /// Energy received from other bodies through contact impulses (negative: given to them); the
+    /// exchanges of the bodies of a contact sum to zero (docs/physics/08-energy-ledger.md, (8.4)).
+    Real exchanged = 0.0;
     /// Energy added by applyImpulse and by the setters (velocity, pose, mass, size, gravity).
     Real added = 0.0;
     /// Work of the impact impulses during the last step; positive means the impact solver added
@@ -28,6 +32,12 @@ struct EnergyLedger {
     /// sub-step's energy change between the contact force and gravity is itself only first-order
     /// accurate, see docs/physics/08-energy-ledger.md.)
     Real impactWorkLastStep = 0.0;
+
+    /// kinetic + potential + removed() - added - exchanged - initial: zero to rounding.
+    [[nodiscard]] Real imbalance(Real kineticPlusPotential) const
+    {
+        return kineticPlusPotential + removed() - added - exchanged - initial;
+    }
 
     [[nodiscard]] Real removed() const
     {

@@ -10,6 +10,7 @@
 #include "tumble/shape.hpp"
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -17,7 +18,27 @@
 namespace tumble {
 
 struct BodySlot;
+struct StepContext;
 struct StepEvents;
+
+namespace detail {
+struct StepScratch;
+/// The step's working buffers (broad phase, islands, their events); a copied World starts with
+/// empty ones.
+class StepScratchHandle {
+public:
+    StepScratchHandle();
+    StepScratchHandle(const StepScratchHandle& other);
+    StepScratchHandle(StepScratchHandle&& other) noexcept;
+    StepScratchHandle& operator=(const StepScratchHandle& other);
+    StepScratchHandle& operator=(StepScratchHandle&& other) noexcept;
+    ~StepScratchHandle();
+    [[nodiscard]] StepScratch& get() const { return *m_scratch; }
+
+private:
+    std::unique_ptr<StepScratch> m_scratch;
+};
+} // namespace detail
 
 /// Owns every body, the gravity and the ground; advances them with step(dt).
 class World {
@@ -41,6 +62,15 @@ public:
     /// The ground plane, or none.
     [[nodiscard]] const std::optional<Plane>& ground() const { return m_ground; }
     void setGround(const std::optional<Plane>& ground);
+
+    /// The ground's own material, or none: its contacts take the dynamic body's (the handouts').
+    [[nodiscard]] const std::optional<Material>& groundMaterial() const { return m_groundMaterial; }
+    void setGroundMaterial(const std::optional<Material>& material);
+
+    /// Adds a static half-space (its normal must be a unit vector) and returns its index.
+    int addPlane(const StaticPlane& plane);
+    /// The half-spaces besides the ground, in the order they were added.
+    [[nodiscard]] std::span<const StaticPlane> planes() const { return m_planes; }
 
     /// Adds a body; its mass and size must be positive and finite (checked by TUMBLE_ASSERT).
     BodyId createBody(const BodyDef& def);
@@ -89,11 +119,18 @@ private:
     /// Runs `change` on a body and books the energy it adds as added by the user.
     template <typename Change>
     void editBody(BodyId id, Change change);
+    [[nodiscard]] StepContext stepContext() const;
+    void findPairs(detail::StepScratch& scratch, Real dt);
+    void buildStepIslands(detail::StepScratch& scratch, Real dt);
+    void advanceSolitaryBodies(Real dt);
     void advanceBatch(std::size_t batch, Real dt);
-    void mergeBatchEvents();
+    void advanceCoupledIslands(detail::StepScratch& scratch, Real dt);
+    void mergeEvents(const detail::StepScratch& scratch);
 
     WorldSettings m_settings;
     std::optional<Plane> m_ground;
+    std::optional<Material> m_groundMaterial;
+    std::vector<StaticPlane> m_planes;
     std::vector<BodySlot> m_slots;
     std::vector<std::uint32_t> m_freeSlots;
     Real m_time = 0.0;
@@ -102,6 +139,7 @@ private:
     std::vector<ContactRecord> m_contactRecords;
     /// One per batch of kBatchSize slots.
     std::vector<StepEvents> m_batchEvents;
+    detail::StepScratchHandle m_scratch;
 };
 
 } // namespace tumble

@@ -21,6 +21,9 @@ struct SolverBody {
     /// (08-energy-ledger.md, (8.2)).
     Real normalWork = 0.0;
     Real frictionWork = 0.0;
+    /// Work received from other moving bodies beyond this body's share of what the contact
+    /// dissipated (8.4).
+    Real exchangedWork = 0.0;
 
     [[nodiscard]] Vec3 velocityAt(const Vec3& offset) const
     {
@@ -47,8 +50,10 @@ struct ContactConstraint {
     /// Tangential K_t (11.3) and its inverse, row-major.
     std::array<Real, 4> tangentK{};
     std::array<Real, 4> tangentMass{};
-    Real friction = 0.0;
+    /// The pair's kinetic and static coefficients, and the one this solve uses (6.2).
+    Real kineticFriction = 0.0;
     Real staticFriction = 0.0;
+    Real friction = 0.0;
     Real restitution = 0.0;
     /// Lowest normal velocity the solve allows: -e vn for an impact, 0 in contact, -gap / tau
     /// for a point still apart (11.4).

@@ -20,6 +20,8 @@ struct ContactSolveSettings {
 struct ContactWork {
     Real normal = 0.0;
     Real friction = 0.0;
+    /// Energy received from other bodies (8.4); zero against static geometry.
+    Real exchanged = 0.0;
 };
 
 /// What an impact did to the body.

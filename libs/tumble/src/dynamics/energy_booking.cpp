@@ -8,7 +8,8 @@ void bookContact(Body& body, const ContactWork& work, Real energyChange, bool im
     const Real contactWork = work.normal + work.friction;
     body.ledger.removedByNormal -= work.normal;
     body.ledger.removedByFriction -= work.friction;
-    body.ledger.removedByIntegration -= energyChange - contactWork;
+    body.ledger.exchanged += work.exchanged;
+    body.ledger.removedByIntegration -= energyChange - contactWork - work.exchanged;
     if (impact) {
         body.ledger.impactWorkLastStep += contactWork;
     }

@@ -1,0 +1,257 @@
+// An island of touching bodies: sub-steps that end at the next impact, so impacts are resolved
+// one after the other in time order (docs/physics/11-island-solver.md).
+#include "step/coupled_step.hpp"
+
+#include "dynamics/energy_booking.hpp"
+#include "dynamics/integrator.hpp"
+#include "dynamics/island_solver.hpp"
+#include "step/island_contacts.hpp"
+#include "step/island_events.hpp"
+#include "step/island_motion.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tumble {
+
+namespace {
+
+/// A touching point approaching faster than this is an impact, m/s (as for a body alone).
+constexpr Real kImpactSpeed = 1e-3;
+/// Sub-steps in one step; the last one takes the rest of the step whatever arrives in it, and
+/// the speculative targets (11.4) still keep its points from crossing.
+constexpr int kMaxSubsteps = 16;
+/// Convergence of the sweeps (5.10): impacts to rounding, resting contact as for a body alone.
+constexpr Real kImpactConvergence = 1e-13;
+constexpr Real kRestingConvergence = 1e-10;
+
+class CoupledStep {
+public:
+    CoupledStep(const CoupledIsland& island, std::span<BodySlot> slots, const StepContext& context,
+                StepEvents& events)
+        : m_island(island), m_slots(slots), m_context(context), m_settings(context.settings),
+          m_events(events)
+    {
+    }
+
+    void run(Real dt);
+
+private:
+    void gatherBodies();
+    void resolveImpacts(Real time);
+    void solveSubstep(Real tau);
+    [[nodiscard]] Real earliestArrival(Real tau) const;
+    void finishSubstep(Real tau);
+    Body& body(std::size_t local) { return m_slots[m_island.bodies[local]].body; }
+
+    const CoupledIsland& m_island;
+    std::span<BodySlot> m_slots;
+    const StepContext& m_context;
+    const WorldSettings& m_settings;
+    StepEvents& m_events;
+    std::vector<SolverBody> m_bodies;
+    std::vector<IslandContact> m_contacts;
+    std::vector<ContactConstraint> m_constraints;
+    /// Each body's energy now, carried from stage to stage (8.3).
+    std::vector<Real> m_energies;
+    std::vector<Vec3> m_velocityStart;
+    std::vector<Vec3> m_angularVelocityStart;
+};
+
+void CoupledStep::gatherBodies()
+{
+    const std::size_t count = m_island.bodies.size();
+    m_bodies.assign(count + 1, SolverBody{});
+    for (std::size_t i = 0; i < count; ++i) {
+        const Body& b = body(i);
+        m_bodies[i] = {b.linearVelocity, b.angularVelocity, b.invMass, b.invInertiaWorld};
+    }
+}
+
+void CoupledStep::run(Real dt)
+{
+    const std::size_t count = m_island.bodies.size();
+    m_energies.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        m_energies[i] = energyOf(body(i), m_settings.gravity);
+    }
+    Real elapsed = 0.0;
+    for (int substep = 0;; ++substep) {
+        const Real remaining = dt - elapsed;
+        // narrow phase: every point within reach of the rest of the step
+        findIslandContacts(m_island, m_slots, m_context, remaining, m_contacts);
+        buildConstraints(m_contacts, m_slots, m_island, m_constraints);
+        // impacts of the points in contact now, all together (11.4)
+        resolveImpacts(m_context.time + elapsed);
+        // velocities over the rest of the step, shortened to the next impact (11.8)
+        Real tau = remaining;
+        solveSubstep(tau);
+        if (substep + 1 < kMaxSubsteps) {
+            const Real arrival = earliestArrival(tau);
+            if (arrival < tau) {
+                tau = arrival;
+                solveSubstep(tau);
+            }
+        }
+        // positions, push-out, warm start (11.9), (11.10)
+        finishSubstep(tau);
+        if (!(tau < remaining)) {
+            break;
+        }
+        elapsed += tau;
+        if (!(elapsed < dt)) {
+            break;
+        }
+    }
+}
+
+void CoupledStep::resolveImpacts(Real time)
+{
+    const Real touching = m_settings.contactTolerance;
+    bool approaching = false;
+    gatherBodies();
+    for (ContactConstraint& c : m_constraints) {
+        const Vec3 velocity = m_bodies[c.bodyB].velocityAt(c.offsetB) -
+                              m_bodies[c.bodyA].velocityAt(c.offsetA);
+        approaching |= c.separation <= touching && glm::dot(c.normal, velocity) < -kImpactSpeed;
+    }
+    if (!approaching) {
+        return;
+    }
+    // the points in contact only: those still apart are met at their own time
+    std::vector<ContactConstraint> impact;
+    impact.reserve(m_constraints.size());
+    for (const ContactConstraint& c : m_constraints) {
+        if (c.separation <= touching) {
+            impact.push_back(c);
+            prepareConstraint(impact.back(), m_bodies,
+                              {ConstraintTarget::Impact, 0.0, touching,
+                               m_settings.restitutionThreshold});
+        }
+    }
+    std::vector<Real> kineticBefore(m_island.bodies.size());
+    for (std::size_t i = 0; i < m_island.bodies.size(); ++i) {
+        kineticBefore[i] = body(i).kineticEnergy();
+    }
+    solveConstraints(impact, m_bodies, m_settings.solverIterations, kImpactConvergence);
+    // (5.6) for an island: restitution targets met point by point can add kinetic energy when
+    // several points push at once; such an impact is solved again as a plastic one, which
+    // cannot (its impulses minimise the kinetic energy over the admissible ones)
+    Real kineticAfter = 0.0;
+    Real kineticTotal = 0.0;
+    for (std::size_t i = 0; i < m_island.bodies.size(); ++i) {
+        const Body& b = body(i);
+        kineticTotal += kineticBefore[i];
+        kineticAfter += 0.5 * b.mass * lengthSquared(m_bodies[i].linearVelocity) +
+                        0.5 * glm::dot(m_bodies[i].angularVelocity,
+                                       b.inertiaWorld() * m_bodies[i].angularVelocity);
+    }
+    if (kineticAfter > kineticTotal * (1.0 + 1e-12)) {
+        gatherBodies();
+        for (ContactConstraint& c : impact) {
+            c.normalImpulse = 0.0;
+            c.tangentImpulse1 = 0.0;
+            c.tangentImpulse2 = 0.0;
+            c.targetNormalVelocity = 0.0;
+            if (c.restitutionState == RestitutionState::Applied) {
+                c.restitutionState = RestitutionState::Suppressed;
+            }
+        }
+        solveConstraints(impact, m_bodies, m_settings.solverIterations, kImpactConvergence);
+    }
+    for (std::size_t i = 0; i < m_island.bodies.size(); ++i) {
+        Body& b = body(i);
+        b.linearVelocity = m_bodies[i].linearVelocity;
+        b.angularVelocity = m_bodies[i].angularVelocity;
+        const Real energyAfter = energyOf(b, m_settings.gravity);
+        bookContact(b, {m_bodies[i].normalWork, m_bodies[i].frictionWork, m_bodies[i].exchangedWork},
+                    energyAfter - m_energies[i], true);
+        m_energies[i] = energyAfter;
+    }
+    recordIslandImpacts(m_island, m_slots, m_contacts, impact, kineticBefore, kImpactSpeed, time,
+                        m_events);
+}
+
+void CoupledStep::solveSubstep(Real tau)
+{
+    gatherBodies();
+    const std::size_t count = m_island.bodies.size();
+    m_velocityStart.resize(count);
+    m_angularVelocityStart.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        m_velocityStart[i] = m_bodies[i].linearVelocity;
+        m_angularVelocityStart[i] = m_bodies[i].angularVelocity;
+        // gravity over the sub-step (2.2)
+        m_bodies[i].linearVelocity += m_settings.gravity * tau;
+    }
+    const ConstraintTargetSettings targets{ConstraintTarget::Substep, tau,
+                                           m_settings.contactTolerance,
+                                           m_settings.restitutionThreshold};
+    for (ContactConstraint& c : m_constraints) {
+        prepareConstraint(c, m_bodies, targets);
+    }
+    loadWarmStart(m_island, m_slots, m_contacts, m_constraints, tau);
+    warmStart(m_constraints, m_bodies);
+    solveConstraints(m_constraints, m_bodies, m_settings.solverIterations, kRestingConvergence);
+}
+
+Real CoupledStep::earliestArrival(Real tau) const
+{
+    // (11.8): a point still apart that the solve had to stop (its speculative target bound) and
+    // that arrives fast enough to bounce ends the sub-step when it arrives, so its impact is
+    // resolved at contact, before the impacts that come after it
+    Real arrival = tau;
+    for (const ContactConstraint& c : m_constraints) {
+        if (c.separation <= m_settings.contactTolerance || c.normalImpulse <= 0.0 ||
+            c.restitution <= 0.0) {
+            continue;
+        }
+        // the gap under gravity alone: g + v0 t + a t^2 / 2, with the relative normal
+        // acceleration a (zero between two falling bodies) and v0 the velocity before gravity
+        const Real accelerationB = m_bodies[c.bodyB].invMass > 0.0 ? 1.0 : 0.0;
+        const Real accelerationA = m_bodies[c.bodyA].invMass > 0.0 ? 1.0 : 0.0;
+        const Real a = (accelerationB - accelerationA) * glm::dot(c.normal, m_settings.gravity);
+        const Real v0 = c.normalVelocityBefore - a * tau;
+        if (-v0 - 0.5 * a * tau <= m_settings.restitutionThreshold) {
+            continue;
+        }
+        const Real discriminant = v0 * v0 - 2.0 * a * c.separation;
+        const Real root = std::sqrt(std::max(0.0, discriminant));
+        if (-v0 + root > 0.0) {
+            arrival = std::min(arrival, 2.0 * c.separation / (-v0 + root));
+        }
+    }
+    return arrival;
+}
+
+void CoupledStep::finishSubstep(Real tau)
+{
+    const std::size_t count = m_island.bodies.size();
+    for (std::size_t i = 0; i < count; ++i) {
+        Body& b = body(i);
+        b.linearVelocity = m_bodies[i].linearVelocity;
+        b.angularVelocity = m_bodies[i].angularVelocity;
+        integrateIslandBody(b, m_velocityStart[i], m_constraints, m_contacts,
+                            static_cast<std::uint32_t>(i), tau, m_settings.integrator);
+        const Real energyAfter = energyOf(b, m_settings.gravity);
+        bookContact(b, {m_bodies[i].normalWork, m_bodies[i].frictionWork, m_bodies[i].exchangedWork},
+                    energyAfter - m_energies[i], false);
+        m_energies[i] = energyAfter;
+    }
+    storeWarmStart(m_island, m_slots, m_contacts, m_constraints, tau);
+    pushOutOfPenetration(m_island, m_slots, m_constraints, tau, m_settings);
+    for (std::size_t i = 0; i < count; ++i) {
+        m_energies[i] = bookCorrection(body(i), m_energies[i], m_settings.gravity);
+    }
+    markTouching(m_island, m_slots, m_constraints, m_settings.contactTolerance);
+}
+
+} // namespace
+
+void advanceCoupled(const CoupledIsland& island, std::span<BodySlot> slots,
+                    const StepContext& context, Real dt, StepEvents& events)
+{
+    CoupledStep(island, slots, context, events).run(dt);
+}
+
+} // namespace tumble

@@ -1,0 +1,29 @@
+// The step of an island of bodies that may touch each other or static geometry other than the
+// ground alone: narrow phase, impacts in time order, resting contact, positions, push-out
+// (docs/physics/11-island-solver.md).
+#pragma once
+
+#include "body_slot.hpp"
+#include "step/step_context.hpp"
+#include "step/step_events.hpp"
+
+#include <span>
+#include <utility>
+#include <vector>
+
+namespace tumble {
+
+/// What the broad phase and the islands hand to the coupled step.
+struct CoupledIsland {
+    /// Slot indices of the island's dynamic bodies, ascending.
+    std::vector<std::uint32_t> bodies;
+    /// Pairs of slot indices (lower first) whose boxes swept over the step overlap: both in
+    /// `bodies`, or one of them a static body.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+};
+
+/// Advances the island's bodies by dt together. Writes only the slots of `island.bodies`.
+void advanceCoupled(const CoupledIsland& island, std::span<BodySlot> slots,
+                    const StepContext& context, Real dt, StepEvents& events);
+
+} // namespace tumble

@@ -1,0 +1,170 @@
+// Narrow phase of an island: box-box, box-static box, box-half-space.
+#include "step/island_contacts.hpp"
+
+#include "collision/collide_cuboid_cuboid.hpp"
+#include "collision/collide_cuboid_half_space.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tumble {
+
+namespace {
+
+/// Position in the island's solver bodies of a slot: its index among the island's bodies, or
+/// the static solver body after them.
+std::uint32_t solverIndexOf(const CoupledIsland& island, std::uint32_t slot)
+{
+    const auto found = std::lower_bound(island.bodies.begin(), island.bodies.end(), slot);
+    if (found != island.bodies.end() && *found == slot) {
+        return static_cast<std::uint32_t>(found - island.bodies.begin());
+    }
+    return static_cast<std::uint32_t>(island.bodies.size());
+}
+
+/// How far any point of the body can move over `horizon` seconds: the centre's speed, the
+/// rotation's reach at the half diagonal and gravity's drift (a bound, as in (4.7)).
+Real reachOver(const Body& body, const Vec3& gravity, Real horizon)
+{
+    if (body.isStatic()) {
+        return 0.0;
+    }
+    const Real radius = glm::length(body.shape.halfExtents());
+    return horizon * (glm::length(body.linearVelocity) + glm::length(body.angularVelocity) * radius +
+                      glm::length(gravity) * horizon);
+}
+
+void setMaterial(IslandContact& contact, const Material& material)
+{
+    contact.restitution = material.restitution;
+    contact.friction = material.friction;
+    contact.staticFriction = material.staticFrictionOrKinetic();
+}
+
+void addHalfSpaceContacts(const CoupledIsland& island, std::span<const BodySlot> slots,
+                          const StepContext& context, Real horizon,
+                          std::vector<IslandContact>& contacts)
+{
+    const auto staticIndex = static_cast<std::uint32_t>(island.bodies.size());
+    const Real tolerance = context.settings.contactTolerance;
+    for (std::uint32_t local = 0; local < island.bodies.size(); ++local) {
+        const Body& body = slots[island.bodies[local]].body;
+        const Transform pose{body.position, body.orientation};
+        const Real margin = tolerance + reachOver(body, context.settings.gravity, horizon);
+        const auto addContact = [&](const Vec3& point, const Vec3& normal, std::uint32_t side,
+                                    const std::optional<Material>& material) {
+            IslandContact contact;
+            contact.manifold =
+                collideCuboidHalfSpace(pose, body.shape.halfExtents(), point, normal, margin);
+            if (contact.manifold.pointCount == 0) {
+                return;
+            }
+            contact.solverA = staticIndex;
+            contact.solverB = local;
+            contact.sideA = side;
+            contact.sideB = island.bodies[local];
+            contact.owner = local;
+            contact.ownerKey = side;
+            setMaterial(contact, mixMaterials(body.material, material));
+            contacts.push_back(contact);
+        };
+        if (context.ground) {
+            addContact(Vec3(0.0, context.ground->height, 0.0), Plane::normal(), kGroundSide,
+                       context.groundMaterial);
+        }
+        for (std::uint32_t k = 0; k < context.planes.size(); ++k) {
+            const StaticPlane& plane = context.planes[k];
+            addContact(plane.point, plane.normal, kPlaneSide + k, plane.material);
+        }
+    }
+}
+
+} // namespace
+
+Material mixMaterials(const Material& dynamic, const std::optional<Material>& other)
+{
+    if (!other) {
+        return dynamic;
+    }
+    Material mixed;
+    mixed.restitution = std::max(dynamic.restitution, other->restitution);
+    mixed.friction = std::sqrt(dynamic.friction * other->friction);
+    mixed.staticFriction =
+        std::sqrt(dynamic.staticFrictionOrKinetic() * other->staticFrictionOrKinetic());
+    return mixed;
+}
+
+void findIslandContacts(const CoupledIsland& island, std::span<const BodySlot> slots,
+                        const StepContext& context, Real horizon,
+                        std::vector<IslandContact>& contacts)
+{
+    contacts.clear();
+    const Real tolerance = context.settings.contactTolerance;
+    const Vec3& gravity = context.settings.gravity;
+    for (const auto& [slotA, slotB] : island.pairs) {
+        const Body& a = slots[slotA].body;
+        const Body& b = slots[slotB].body;
+        const Real margin =
+            tolerance + reachOver(a, gravity, horizon) + reachOver(b, gravity, horizon);
+        IslandContact contact;
+        contact.manifold =
+            collideCuboids({a.position, a.orientation}, a.shape.halfExtents(),
+                           {b.position, b.orientation}, b.shape.halfExtents(), margin);
+        if (contact.manifold.pointCount == 0) {
+            continue;
+        }
+        contact.solverA = solverIndexOf(island, slotA);
+        contact.solverB = solverIndexOf(island, slotB);
+        contact.sideA = slotA;
+        contact.sideB = slotB;
+        // the lower dynamic body keeps the warm start; a static side never does
+        const bool aKeeps = !a.isStatic();
+        contact.owner = aKeeps ? contact.solverA : contact.solverB;
+        contact.ownerKey = aKeeps ? slotB : slotA;
+        const Material material =
+            a.isStatic()   ? mixMaterials(b.material, a.materialGiven ? std::optional(a.material)
+                                                                      : std::nullopt)
+            : b.isStatic() ? mixMaterials(a.material, b.materialGiven ? std::optional(b.material)
+                                                                      : std::nullopt)
+                           : mixMaterials(a.material, b.material);
+        setMaterial(contact, material);
+        contacts.push_back(contact);
+    }
+    addHalfSpaceContacts(island, slots, context, horizon, contacts);
+}
+
+void buildConstraints(std::span<IslandContact> contacts, std::span<const BodySlot> slots,
+                      const CoupledIsland& island, std::vector<ContactConstraint>& constraints)
+{
+    constraints.clear();
+    const auto staticIndex = static_cast<std::uint32_t>(island.bodies.size());
+    const auto centreOf = [&](std::uint32_t solver, std::uint32_t side, const Vec3& point) {
+        if (solver != staticIndex) {
+            return slots[island.bodies[solver]].body.position;
+        }
+        // a static body turns about its centre; a half-space has no centre (nothing turns it)
+        return side < kPlaneSide ? slots[side].body.position : point;
+    };
+    for (std::uint32_t index = 0; index < contacts.size(); ++index) {
+        IslandContact& contact = contacts[index];
+        contact.firstConstraint = static_cast<std::uint32_t>(constraints.size());
+        for (int k = 0; k < contact.manifold.pointCount; ++k) {
+            const PairContactPoint& point = contact.manifold.points[k];
+            ContactConstraint c;
+            c.bodyA = contact.solverA;
+            c.bodyB = contact.solverB;
+            c.contact = index;
+            c.point = static_cast<std::uint32_t>(k);
+            c.normal = contact.manifold.normal;
+            c.offsetA = point.position - centreOf(contact.solverA, contact.sideA, point.position);
+            c.offsetB = point.position - centreOf(contact.solverB, contact.sideB, point.position);
+            c.separation = point.separation;
+            c.kineticFriction = contact.friction;
+            c.staticFriction = contact.staticFriction;
+            c.restitution = contact.restitution;
+            constraints.push_back(c);
+        }
+    }
+}
+
+} // namespace tumble

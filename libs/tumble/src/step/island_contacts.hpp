@@ -1,0 +1,50 @@
+// The narrow phase of an island: the contacts of its bodies with each other, with static bodies
+// and with the half-spaces, as manifolds and as solver constraints (docs/physics/11-island-solver.md).
+#pragma once
+
+#include "body_slot.hpp"
+#include "collision/pair_manifold.hpp"
+#include "dynamics/contact_constraint.hpp"
+#include "step/coupled_step.hpp"
+#include "step/step_context.hpp"
+
+#include <span>
+#include <vector>
+
+namespace tumble {
+
+/// One contact of the island: two sides, their manifold and the material of the pair.
+struct IslandContact {
+    /// Solver-body indices; the static side is the island's last solver body.
+    std::uint32_t solverA = 0;
+    std::uint32_t solverB = 0;
+    /// The sides as the world names them: a slot index, kPlaneSide + plane index, or kGroundSide.
+    std::uint32_t sideA = 0;
+    std::uint32_t sideB = 0;
+    /// Solver index of the body that keeps the contact's warm start, and the key it keeps it
+    /// under (the other side).
+    std::uint32_t owner = 0;
+    std::uint32_t ownerKey = 0;
+    PairManifold manifold{};
+    Real restitution = 0.0;
+    Real friction = 0.0;
+    Real staticFriction = 0.0;
+    /// Index of the contact's first constraint; its points follow in order.
+    std::uint32_t firstConstraint = 0;
+};
+
+/// (11.7): the material of a pair: the dynamic body's alone when the other side gives none,
+/// else the larger restitution and the geometric means of the friction coefficients.
+Material mixMaterials(const Material& dynamic, const std::optional<Material>& other);
+
+/// Contacts of the island's bodies at their current poses, every point within a speculative
+/// margin that covers how far the two sides can approach each other over `horizon` seconds.
+void findIslandContacts(const CoupledIsland& island, std::span<const BodySlot> slots,
+                        const StepContext& context, Real horizon,
+                        std::vector<IslandContact>& contacts);
+
+/// One constraint per contact point, with the geometry and material set (impulses zero).
+void buildConstraints(std::span<IslandContact> contacts, std::span<const BodySlot> slots,
+                      const CoupledIsland& island, std::vector<ContactConstraint>& constraints);
+
+} // namespace tumble

@@ -1,0 +1,180 @@
+// Warm starting, positions and push-out of an island's bodies.
+#include "step/island_motion.hpp"
+
+#include "body_state.hpp"
+#include "dynamics/integrator.hpp"
+#include "dynamics/island_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tumble {
+
+namespace {
+
+/// (11.10): the share of a penetration beyond the tolerance taken out per sub-step, and the
+/// sweeps of the push-out solve.
+constexpr Real kPushOutFraction = 0.2;
+constexpr int kPushOutSweeps = 32;
+constexpr Real kPushOutConvergence = 1e-6;
+} // namespace
+
+void loadWarmStart(const CoupledIsland& island, std::span<const BodySlot> slots,
+                   std::span<const IslandContact> contacts,
+                   std::span<ContactConstraint> constraints, Real tau)
+{
+    for (const IslandContact& contact : contacts) {
+        const std::vector<CachedContactPoint>& cache = slots[island.bodies[contact.owner]].contactCache;
+        for (int k = 0; k < contact.manifold.pointCount; ++k) {
+            ContactConstraint& c = constraints[contact.firstConstraint + k];
+            c.normalImpulse = 0.0;
+            c.tangentImpulse1 = 0.0;
+            c.tangentImpulse2 = 0.0;
+            const std::uint32_t id = contact.manifold.points[k].id;
+            const auto found = std::find_if(cache.begin(), cache.end(), [&](const auto& entry) {
+                return entry.other == contact.ownerKey && entry.id == id;
+            });
+            if (found == cache.end()) {
+                continue;
+            }
+            c.normalImpulse = found->normalRate * tau;
+            const Vec3 friction = found->frictionRate * tau;
+            c.tangentImpulse1 = glm::dot(c.tangent1, friction);
+            c.tangentImpulse2 = glm::dot(c.tangent2, friction);
+            const Real bound = c.friction * c.normalImpulse;
+            const Real magnitude = std::sqrt(c.tangentImpulse1 * c.tangentImpulse1 +
+                                             c.tangentImpulse2 * c.tangentImpulse2);
+            if (magnitude > bound) {
+                const Real scale = magnitude > 0.0 ? bound / magnitude : 0.0;
+                c.tangentImpulse1 *= scale;
+                c.tangentImpulse2 *= scale;
+            }
+        }
+    }
+}
+
+void storeWarmStart(const CoupledIsland& island, std::span<BodySlot> slots,
+                    std::span<const IslandContact> contacts,
+                    std::span<const ContactConstraint> constraints, Real tau)
+{
+    for (const std::uint32_t slot : island.bodies) {
+        slots[slot].contactCache.clear();
+    }
+    for (const IslandContact& contact : contacts) {
+        std::vector<CachedContactPoint>& cache = slots[island.bodies[contact.owner]].contactCache;
+        for (int k = 0; k < contact.manifold.pointCount; ++k) {
+            const ContactConstraint& c = constraints[contact.firstConstraint + k];
+            if (c.normalImpulse <= 0.0) {
+                continue;
+            }
+            cache.push_back({contact.ownerKey, contact.manifold.points[k].id,
+                             c.normalImpulse / tau,
+                             (c.tangentImpulse1 * c.tangent1 + c.tangentImpulse2 * c.tangent2) /
+                                 tau});
+        }
+    }
+}
+
+void integrateIslandBody(Body& body, const Vec3& velocityStart,
+                         std::span<const ContactConstraint> constraints,
+                         std::span<const IslandContact> contacts, std::uint32_t local, Real tau,
+                         Integrator integrator)
+{
+    (void)contacts;
+    // an orthonormal basis of the normals that pushed on the body (Gram-Schmidt, at most 3)
+    std::array<Vec3, 3> basis{};
+    int dimension = 0;
+    for (const ContactConstraint& c : constraints) {
+        if (dimension == 3 || c.normalImpulse <= 0.0 || (c.bodyA != local && c.bodyB != local)) {
+            continue;
+        }
+        Vec3 direction = c.normal;
+        for (int k = 0; k < dimension; ++k) {
+            direction -= glm::dot(basis[k], direction) * basis[k];
+        }
+        const Real length = glm::length(direction);
+        if (length > 1e-6) {
+            basis[dimension++] = direction / length;
+        }
+    }
+    Vec3 velocity = integrator == Integrator::Exact ? 0.5 * (velocityStart + body.linearVelocity)
+                                                    : body.linearVelocity;
+    for (int k = 0; k < dimension; ++k) {
+        velocity += glm::dot(basis[k], body.linearVelocity - velocity) * basis[k];
+    }
+    body.position += tau * velocity;
+    integrateRotation(body, tau, integrator);
+}
+
+void pushOutOfPenetration(const CoupledIsland& island, std::span<BodySlot> slots,
+                          std::span<const ContactConstraint> constraints, Real tau,
+                          const WorldSettings& settings)
+{
+    const std::size_t count = island.bodies.size();
+    std::vector<SolverBody> pseudo(count + 1);
+    for (std::size_t i = 0; i < count; ++i) {
+        const Body& body = slots[island.bodies[i]].body;
+        pseudo[i].invMass = body.invMass;
+        pseudo[i].invInertiaWorld = body.invInertiaWorld;
+    }
+    std::vector<ContactConstraint> deep;
+    for (const ContactConstraint& c : constraints) {
+        const Body* bodyA = c.bodyA < count ? &slots[island.bodies[c.bodyA]].body : nullptr;
+        const Body* bodyB = c.bodyB < count ? &slots[island.bodies[c.bodyB]].body : nullptr;
+        const Vec3 velocityA = bodyA ? bodyA->velocityAt(bodyA->position + c.offsetA) : Vec3(0.0);
+        const Vec3 velocityB = bodyB ? bodyB->velocityAt(bodyB->position + c.offsetB) : Vec3(0.0);
+        const Real predicted = c.separation + tau * glm::dot(c.normal, velocityB - velocityA);
+        const Real excess = -predicted - settings.contactTolerance;
+        if (excess <= 0.0) {
+            continue;
+        }
+        ContactConstraint& push = deep.emplace_back(c);
+        push.normalImpulse = 0.0;
+        push.tangentImpulse1 = 0.0;
+        push.tangentImpulse2 = 0.0;
+        push.kineticFriction = 0.0;
+        push.staticFriction = 0.0;
+        prepareConstraint(push, pseudo, {ConstraintTarget::Substep, tau, 0.0, 0.0});
+        push.targetNormalVelocity = kPushOutFraction * excess / tau;
+    }
+    if (deep.empty()) {
+        return;
+    }
+    solveConstraints(deep, pseudo, kPushOutSweeps, kPushOutConvergence);
+    for (std::size_t i = 0; i < count; ++i) {
+        Body& body = slots[island.bodies[i]].body;
+        if (lengthSquared(pseudo[i].linearVelocity) + lengthSquared(pseudo[i].angularVelocity) ==
+            0.0) {
+            continue;
+        }
+        body.position += tau * pseudo[i].linearVelocity;
+        const Vec3 turn = tau * pseudo[i].angularVelocity;
+        const Real angle = glm::length(turn);
+        if (angle > 0.0) {
+            body.orientation = glm::normalize(axisAngle(turn / angle, angle) * body.orientation);
+            refreshWorldInertia(body);
+        }
+    }
+}
+
+void markTouching(const CoupledIsland& island, std::span<BodySlot> slots,
+                  std::span<const ContactConstraint> constraints, Real tolerance)
+{
+    const std::size_t count = island.bodies.size();
+    for (const std::uint32_t slot : island.bodies) {
+        slots[slot].touchingGround = false;
+    }
+    for (const ContactConstraint& c : constraints) {
+        if (c.separation > tolerance && c.normalImpulse <= 0.0) {
+            continue;
+        }
+        if (c.bodyA < count) {
+            slots[island.bodies[c.bodyA]].touchingGround = true;
+        }
+        if (c.bodyB < count) {
+            slots[island.bodies[c.bodyB]].touchingGround = true;
+        }
+    }
+}
+
+} // namespace tumble

@@ -1,0 +1,44 @@
+// What the island step does around its solves: warm starting from last step's impulses,
+// positions, the push-out and the touching flags (docs/physics/11-island-solver.md).
+#pragma once
+
+#include "body_slot.hpp"
+#include "dynamics/contact_constraint.hpp"
+#include "step/coupled_step.hpp"
+#include "step/island_contacts.hpp"
+
+#include <span>
+
+namespace tumble {
+
+/// (11.6): each constraint starts from its point's impulses of the last step, per second, scaled
+/// to tau and clamped to its cone.
+void loadWarmStart(const CoupledIsland& island, std::span<const BodySlot> slots,
+                   std::span<const IslandContact> contacts,
+                   std::span<ContactConstraint> constraints, Real tau);
+
+/// Keeps the impulses of a solve of length tau, per second, in the owners' caches.
+void storeWarmStart(const CoupledIsland& island, std::span<BodySlot> slots,
+                    std::span<const IslandContact> contacts,
+                    std::span<const ContactConstraint> constraints, Real tau);
+
+/// (11.9): the body's translation and rotation over tau. The centre moves with the mean of the
+/// start and end velocities (2.2), except along the normals of the points that pushed on it,
+/// where it moves with the end velocity they allowed (the rule (2.2a) of a body alone).
+void integrateIslandBody(Body& body, const Vec3& velocityStart,
+                         std::span<const ContactConstraint> constraints,
+                         std::span<const IslandContact> contacts, std::uint32_t local, Real tau,
+                         Integrator integrator);
+
+/// (11.10): points predicted to end the sub-step deeper than the contact tolerance are pushed
+/// apart by a fraction of the excess with pseudo-velocities that move the poses only, so the
+/// push-out adds no kinetic energy.
+void pushOutOfPenetration(const CoupledIsland& island, std::span<BodySlot> slots,
+                          std::span<const ContactConstraint> constraints, Real tau,
+                          const WorldSettings& settings);
+
+/// Marks the island's bodies that end the sub-step in contact with anything.
+void markTouching(const CoupledIsland& island, std::span<BodySlot> slots,
+                  std::span<const ContactConstraint> constraints, Real tolerance);
+
+} // namespace tumble

@@ -1,0 +1,27 @@
+// The working buffers of a step, kept from step to step so a steady scene allocates little:
+// the broad phase's boxes and pairs, the islands, and the events of each island.
+#pragma once
+
+#include "collision/aabb.hpp"
+#include "collision/broad_phase.hpp"
+#include "step/coupled_step.hpp"
+#include "step/step_events.hpp"
+#include "tumble/world.hpp"
+
+#include <vector>
+
+namespace tumble::detail {
+
+struct StepScratch {
+    std::vector<BroadPhaseProxy> proxies;
+    /// The box of each slot over the step (empty for a dead slot).
+    std::vector<Aabb> sweptBoxes;
+    BroadPhase broadPhase;
+    /// The broad phase's pairs as slot indices, lower first.
+    std::vector<ProxyPair> links;
+    std::vector<std::uint8_t> dynamicAwake;
+    std::vector<CoupledIsland> islands;
+    std::vector<StepEvents> islandEvents;
+};
+
+} // namespace tumble::detail

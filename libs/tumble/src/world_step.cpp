@@ -1,0 +1,150 @@
+// World's step stages around the solvers: the broad phase, the islands and the coupled islands'
+// advance (docs/physics/10-broad-phase.md, 11-island-solver.md).
+#include "tumble/world.hpp"
+
+#include "body_slot.hpp"
+#include "dynamics/islands.hpp"
+#include "dynamics/rest.hpp"
+#include "step/coupled_step.hpp"
+#include "step/step_scratch.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#ifdef TUMBLE_HAVE_OPENMP
+#include <omp.h>
+#endif
+
+namespace tumble {
+
+namespace {
+
+/// A bound on the angular speed over a torque-free step: |w| <= |L| / I_min <= |w0| I_max / I_min
+/// (the swept box of (10.3) needs one for the whole step).
+Vec3 angularSpeedBound(const Body& body)
+{
+    const Vec3 inertia = body.inertiaBody();
+    const Real ratio = std::max({inertia.x, inertia.y, inertia.z}) /
+                       std::min({inertia.x, inertia.y, inertia.z});
+    return body.angularVelocity * ratio;
+}
+
+/// Whether a box can come within `tolerance` of the half-space: its lowest corner along the
+/// normal, n . c - sum |n_i| e_i, against the plane.
+bool mayReach(const Aabb& box, const StaticPlane& plane, Real tolerance)
+{
+    const Vec3 centre = 0.5 * (box.min + box.max);
+    const Vec3 half = 0.5 * (box.max - box.min);
+    const Real lowest = glm::dot(plane.normal, centre - plane.point) -
+                        glm::dot(glm::abs(plane.normal), half);
+    return lowest <= tolerance;
+}
+
+} // namespace
+
+void World::findPairs(detail::StepScratch& scratch, Real dt)
+{
+    scratch.proxies.clear();
+    scratch.sweptBoxes.assign(m_slots.size(), Aabb{});
+    const Real margin = m_settings.contactTolerance;
+    for (std::uint32_t index = 0; index < m_slots.size(); ++index) {
+        const BodySlot& slot = m_slots[index];
+        if (!slot.alive) {
+            continue;
+        }
+        const Body& body = slot.body;
+        const Transform pose{body.position, body.orientation};
+        const bool movable = !body.isStatic() && !body.asleep;
+        const Aabb box = movable ? sweptCuboidAabb(pose, body.shape.halfExtents(),
+                                                   body.linearVelocity, m_settings.gravity,
+                                                   angularSpeedBound(body), dt, margin)
+                                 : expanded(cuboidAabb(pose, body.shape.halfExtents()), margin);
+        scratch.sweptBoxes[index] = box;
+        scratch.proxies.push_back(BroadPhaseProxy{box, index, movable});
+    }
+    scratch.broadPhase.update(scratch.proxies);
+    scratch.links.clear();
+    for (const ProxyPair& pair : scratch.broadPhase.pairs()) {
+        scratch.links.push_back({scratch.proxies[pair.a].body, scratch.proxies[pair.b].body});
+    }
+}
+
+void World::buildStepIslands(detail::StepScratch& scratch, Real dt)
+{
+    (void)dt;
+    // a sleeping body that an awake one may touch wakes, and joins its island this step
+    for (const ProxyPair& link : scratch.links) {
+        Body& a = m_slots[link.a].body;
+        Body& b = m_slots[link.b].body;
+        if (a.asleep != b.asleep && !a.isStatic() && !b.isStatic()) {
+            Body& sleeper = a.asleep ? a : b;
+            sleeper.asleep = false;
+            sleeper.slowTime = 0.0;
+        }
+    }
+    scratch.dynamicAwake.assign(m_slots.size(), 0);
+    for (std::size_t index = 0; index < m_slots.size(); ++index) {
+        const BodySlot& slot = m_slots[index];
+        scratch.dynamicAwake[index] = slot.alive && !slot.body.isStatic() && !slot.body.asleep;
+    }
+    const Islands islands = buildIslands(m_slots.size(), scratch.dynamicAwake, scratch.links);
+    const IslandLinks links = linksOf(islands, scratch.links);
+    scratch.islands.clear();
+    for (std::size_t k = 0; k < islands.count(); ++k) {
+        const std::span<const std::uint32_t> bodies = islands.island(k);
+        const std::span<const std::uint32_t> islandLinks = links.island(k);
+        // the exact path takes a body alone whose only possible obstacle is the ground
+        bool coupled = bodies.size() > 1 || !islandLinks.empty();
+        for (const StaticPlane& plane : m_planes) {
+            coupled = coupled || mayReach(scratch.sweptBoxes[bodies.front()], plane,
+                                          m_settings.contactTolerance);
+        }
+        for (const std::uint32_t body : bodies) {
+            m_slots[body].coupled = coupled;
+        }
+        if (!coupled) {
+            continue;
+        }
+        CoupledIsland& island = scratch.islands.emplace_back();
+        island.bodies.assign(bodies.begin(), bodies.end());
+        for (const std::uint32_t link : islandLinks) {
+            const ProxyPair& pair = scratch.links[link];
+            island.pairs.emplace_back(std::min(pair.a, pair.b), std::max(pair.a, pair.b));
+        }
+    }
+}
+
+void World::advanceCoupledIslands(detail::StepScratch& scratch, Real dt)
+{
+    const auto count = static_cast<std::ptrdiff_t>(scratch.islands.size());
+    if (scratch.islandEvents.size() < scratch.islands.size()) {
+        scratch.islandEvents.resize(scratch.islands.size());
+    }
+    const StepContext context = stepContext();
+    const auto advance = [&](std::ptrdiff_t k) {
+        const CoupledIsland& island = scratch.islands[static_cast<std::size_t>(k)];
+        StepEvents& events = scratch.islandEvents[static_cast<std::size_t>(k)];
+        events.clear();
+        for (const std::uint32_t body : island.bodies) {
+            m_slots[body].body.ledger.impactWorkLastStep = 0.0;
+        }
+        advanceCoupled(island, m_slots, context, dt, events);
+        updateIslandRest(island.bodies, m_slots, context, dt, events);
+    };
+    // each island writes only its own bodies, so islands run on any thread in any order
+    if (count > 1 && threadCount() > 1) {
+        [[maybe_unused]] const int threads = threadCount();
+#ifdef TUMBLE_HAVE_OPENMP
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+#endif
+        for (std::ptrdiff_t k = 0; k < count; ++k) {
+            advance(k);
+        }
+    } else {
+        for (std::ptrdiff_t k = 0; k < count; ++k) {
+            advance(k);
+        }
+    }
+}
+
+} // namespace tumble

@@ -1,0 +1,125 @@
+// Bodies touching each other against closed forms: head-on impacts (Newton's restitution and
+// momentum), Newton's cradle (impacts in time order), a stack standing still
+// (docs/physics/11-island-solver.md, (11.11)).
+#include "tumble/world.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace tumble {
+namespace {
+
+Material frictionless(Real restitution)
+{
+    return Material{.restitution = restitution, .friction = 0.0};
+}
+
+BodyId addCube(World& world, Real size, Real mass, const Vec3& position, const Vec3& velocity,
+               const Material& material)
+{
+    return world.createBody(BodyDef{.shape = Cuboid{Vec3(size)},
+                                    .mass = mass,
+                                    .position = position,
+                                    .linearVelocity = velocity,
+                                    .material = material});
+}
+
+struct HeadOn {
+    Real massA;
+    Real massB;
+    Real restitution;
+    Real dt;
+};
+
+class HeadOnImpact : public ::testing::TestWithParam<HeadOn> {};
+
+TEST_P(HeadOnImpact, VelocitiesFollowNewtonsRestitutionAndMomentumIsKept)
+{
+    const HeadOn c = GetParam();
+    World world(WorldSettings{.gravity = Vec3(0.0), .allowSleep = false});
+    const Real va = 2.0;
+    const Real vb = -1.0;
+    const BodyId a = addCube(world, 1.0, c.massA, Vec3(-1.0, 0, 0), Vec3(va, 0, 0),
+                             frictionless(c.restitution));
+    const BodyId b = addCube(world, 1.0, c.massB, Vec3(1.0, 0, 0), Vec3(vb, 0, 0),
+                             frictionless(c.restitution));
+    for (int step = 0; step < static_cast<int>(1.0 / c.dt); ++step) {
+        world.step(c.dt);
+    }
+    // 1D impact of two bodies (11.11): the centre-of-mass velocity is kept and the relative
+    // velocity reverses scaled by e
+    const Real total = c.massA + c.massB;
+    const Real expectedA = (c.massA * va + c.massB * vb - c.massB * c.restitution * (va - vb)) / total;
+    const Real expectedB = (c.massA * va + c.massB * vb + c.massA * c.restitution * (va - vb)) / total;
+    EXPECT_NEAR(world.body(a).linearVelocity.x, expectedA, 1e-9);
+    EXPECT_NEAR(world.body(b).linearVelocity.x, expectedB, 1e-9);
+    const Real momentum = c.massA * world.body(a).linearVelocity.x +
+                          c.massB * world.body(b).linearVelocity.x;
+    EXPECT_NEAR(momentum, c.massA * va + c.massB * vb, 1e-12 * total * std::abs(va));
+    EXPECT_NEAR(glm::length(world.body(a).angularVelocity), 0.0, 1e-9);
+    EXPECT_NEAR(world.body(a).linearVelocity.y, 0.0, 1e-12);
+    // they never overlap
+    EXPECT_LE(world.body(a).position.x + 0.5, world.body(b).position.x - 0.5 + 1e-4);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    MassesRestitutionsSteps, HeadOnImpact,
+    ::testing::Values(HeadOn{1.0, 1.0, 1.0, 1.0 / 60}, HeadOn{1.0, 1.0, 0.5, 1.0 / 60},
+                      HeadOn{1.0, 1.0, 0.0, 1.0 / 60}, HeadOn{1.0, 3.0, 1.0, 1.0 / 60},
+                      HeadOn{1.0, 3.0, 0.6, 1.0 / 240}, HeadOn{2.0, 0.5, 0.8, 1.0 / 480},
+                      HeadOn{1.0, 100.0, 0.9, 1.0 / 60}));
+
+TEST(NewtonsCradle, TheLastCubeLeavesWithTheVelocityAndTheOthersStop)
+{
+    // three cubes 1 mm apart in a row, hit by a fourth at 1 m/s: with e = 1 and equal masses each
+    // impact passes the whole velocity on (11.11), so the impacts in time order leave only the
+    // last cube moving (a simultaneous solve would give (-1/3, 2/3, 2/3)-like answers)
+    World world(WorldSettings{.gravity = Vec3(0.0), .allowSleep = false});
+    std::vector<BodyId> row;
+    for (int k = 0; k < 3; ++k) {
+        row.push_back(addCube(world, 0.1, 1.0, Vec3(0.101 * k, 0, 0), Vec3(0.0), frictionless(1.0)));
+    }
+    const BodyId striker =
+        addCube(world, 0.1, 1.0, Vec3(-0.101 - 0.02, 0, 0), Vec3(1.0, 0, 0), frictionless(1.0));
+    for (int step = 0; step < 30; ++step) {
+        world.step(1.0 / 60);
+    }
+    EXPECT_NEAR(world.body(striker).linearVelocity.x, 0.0, 1e-6);
+    EXPECT_NEAR(world.body(row[0]).linearVelocity.x, 0.0, 1e-6);
+    EXPECT_NEAR(world.body(row[1]).linearVelocity.x, 0.0, 1e-6);
+    EXPECT_NEAR(world.body(row[2]).linearVelocity.x, 1.0, 1e-6);
+}
+
+class StackOfCubes : public ::testing::TestWithParam<Real> {};
+
+TEST_P(StackOfCubes, FiveCubesStandStillForTenSeconds)
+{
+    // 5 unit cubes of mass 1 touching, mu = 0.5, no sleeping: each interface carries the weight
+    // above it, and nothing slides, sinks or creeps (taller stacks are docs/plan-contacts.md's
+    // first item)
+    const Real dt = GetParam();
+    World world(WorldSettings{.allowSleep = false});
+    world.setGround(Plane{});
+    std::vector<BodyId> stack;
+    constexpr int kCubes = 5;
+    for (int k = 0; k < kCubes; ++k) {
+        stack.push_back(addCube(world, 1.0, 1.0, Vec3(0.0, 0.5 + k, 0.0), Vec3(0.0),
+                                Material{.restitution = 0.0, .friction = 0.5}));
+    }
+    for (int step = 0; step < static_cast<int>(10.0 / dt); ++step) {
+        world.step(dt);
+    }
+    for (int k = 0; k < kCubes; ++k) {
+        const Body& cube = world.body(stack[k]);
+        EXPECT_LT(std::hypot(cube.position.x, cube.position.z), 1e-3) << "cube " << k;
+    }
+    EXPECT_NEAR(world.body(stack.back()).position.y, kCubes - 0.5, 1e-3);
+}
+
+INSTANTIATE_TEST_SUITE_P(Steps, StackOfCubes, ::testing::Values(1.0 / 60, 1.0 / 240));
+
+} // namespace
+} // namespace tumble
