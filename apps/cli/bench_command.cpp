@@ -232,7 +232,7 @@ void printRows(const std::vector<BenchRow>& rows)
 {
     std::printf("%-4s %-14s %6s %7s %8s %5s %12s %14s %9s %11s %10s\n", "scen", "engine",
                 "bodies", "threads", "steps", "runs", "us/step", "ns/body-step", "at rest",
-                "bytes/body", "peer/tumble");
+                "bytes/body", "ratio");
     for (const BenchRow& row : rows) {
         if (!row.note.empty()) {
             std::printf("%-4s %-14s %6d %7s  %s\n", row.scenario.c_str(), row.engine.c_str(),
@@ -313,6 +313,14 @@ int benchCommand(const BenchOptions& options)
         for (const int threads : options.threads) {
             rows.push_back(runTumble(loaded, name, threads));
         }
+        // The handout drop at tumble run's default (threads = 0, one per core) beside one thread:
+        // a world of one body must not pay for threads, so the ratio shows a regression such as
+        // reading the core count from sysfs on every step (issue 14, item 1).
+        const bool defaultRow = name == "S1";
+        if (defaultRow && std::find(options.threads.begin(), options.threads.end(), 0) ==
+                           options.threads.end()) {
+            rows.push_back(runTumble(loaded, name, 0));
+        }
         // The same with sleeping off: every body is stepped to the end, resting or not.
         rows.push_back(runTumble(loaded, name, options.threads.front(), false));
         // The reference for the ratios: tumble on one thread, or the first thread count timed.
@@ -320,6 +328,12 @@ int benchCommand(const BenchOptions& options)
         for (std::size_t i = first; i < rows.size(); ++i) {
             if (rows[i].engine == "tumble" && (rows[i].threads == 1 || !reference)) {
                 reference = rows[i].nsPerBodyStep();
+            }
+        }
+        // the default-threads row of a one-body scene against the one-thread row (1.00: no cost)
+        for (std::size_t i = first; i < rows.size() && defaultRow; ++i) {
+            if (rows[i].engine == "tumble" && rows[i].threads == 0) {
+                rows[i].ratio = rows[i].nsPerBodyStep() / *reference;
             }
         }
 #ifdef TUMBLE_HAS_PEERS
@@ -346,6 +360,8 @@ int benchCommand(const BenchOptions& options)
                     "S4");
     }
     printRows(rows);
+    std::printf("ratio: a peer's ns/body-step over tumble's on one thread; for tumble at threads "
+                "0 (one per core, tumble run's default), its own over one thread's\n");
     for (const std::string& line : peerSettings) {
         std::printf("settings of %s\n", line.c_str());
     }
