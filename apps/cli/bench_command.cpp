@@ -2,6 +2,7 @@
 // the ratio of each peer's cost per body-step to tumble's measured in the same run.
 #include "bench_command.hpp"
 
+#include "cli_options.hpp"
 #include "console.hpp"
 #include "throw_batch.hpp"
 
@@ -277,17 +278,17 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options)
         "bench", "Time the benchmark scenarios in tumble (and the peer engines with --peers)");
     command->add_option("--bodies", options.bodies, "Body counts of S4 (default 100,1000,4000)")
         ->delimiter(',')
-        ->check(CLI::Range(1, 1000000));
+        ->check(wholeNumberIn(1, 1000000));
     command->add_option("--threads", options.threads, "Thread counts for tumble (default 1,2)")
         ->delimiter(',')
-        ->check(CLI::Range(0, 1024));
+        ->check(wholeNumberIn(0, kMaxThreads, " (one per core)"));
     command->add_option("--duration", options.duration, "Simulated time of each scenario, s")
-        ->check(CLI::PositiveNumber);
+        ->check(positiveNumber());
     command->add_flag("--peers", options.peers,
                       "Also run Bullet, ODE and MuJoCo (those built in) on the same bodies");
     command->add_option("--throws", options.throws,
                         "Throws of dice_cube.toml timed at each thread count (0: none)")
-        ->check(CLI::Range(0L, 100000000L));
+        ->check(wholeNumberIn(0, 100000000));
     options.scenarioDir = TUMBLE_SCENARIO_DIR;
     command->add_option("--scenarios", options.scenarioDir,
                         "Folder with part3_task4_friction.toml, s4_tumbling_cuboids.toml and "

@@ -1,5 +1,6 @@
 #include "console.hpp"
 
+#include "cli_options.hpp"
 #include "output_file.hpp"
 
 #include "tumble/scenario/scenario.hpp"
@@ -268,6 +269,9 @@ int runReportingErrors(const std::function<int()>& command)
     } catch (const OutputError& error) {
         printError(error.what());
         return kExitWriteFailure;
+    } catch (const UsageError& error) {
+        printError(error.what());
+        return kExitBadInput;
     } catch (const scenario::ScenarioError& error) {
         printError(error.what());
         return kExitBadInput;

@@ -1,6 +1,7 @@
 // tumble: the command-line program. Declares the commands; each lives in its own file.
 #include "bench_command.hpp"
 #include "check_command.hpp"
+#include "cli_options.hpp"
 #include "console.hpp"
 #include "plot_command.hpp"
 #include "run_command.hpp"
@@ -14,6 +15,7 @@ int main(int argc, char** argv)
 {
     CLI::App app{"tumble: rigid cuboids falling, bouncing and sliding on a ground plane", "tumble"};
     app.require_subcommand(1);
+    app.set_version_flag("--version", std::string("tumble ") + TUMBLE_VERSION);
 
     tumble::cli::RunOptions runOptions;
     tumble::cli::CheckOptions checkOptions;
@@ -30,12 +32,18 @@ int main(int argc, char** argv)
     tumble::cli::ViewOptions viewOptions;
     const CLI::App* view = tumble::cli::addViewCommand(app, viewOptions);
 
-    // CLI11 prints its own usage errors; every one of them exits with the bad-input code
+    // a bad command line is one line "tumble: error: ..." and exit 2, as for a bad scenario;
+    // help and --version print as CLI11 formats them
     try {
         app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& help) {
+        return app.exit(help);
+    } catch (const CLI::CallForAllHelp& help) {
+        return app.exit(help);
+    } catch (const CLI::CallForVersion& version) {
+        return app.exit(version);
     } catch (const CLI::ParseError& error) {
-        const int code = app.exit(error);
-        return code == 0 ? tumble::cli::kExitOk : tumble::cli::kExitBadInput;
+        return tumble::cli::reportParseError(app, error, argc, argv);
     }
 
     return tumble::cli::runReportingErrors([&] {

@@ -1,5 +1,6 @@
 #include "run_command.hpp"
 
+#include "cli_options.hpp"
 #include "console.hpp"
 #include "csv_writer.hpp"
 #include "interrupt.hpp"
@@ -57,7 +58,7 @@ CLI::App* addRunCommand(CLI::App& app, RunOptions& options)
         ->type_name("PATH");
     command->add_option("--every", options.every, "Steps between CSV samples (>= 1, default 1)")
         ->type_name("N")
-        ->check(CLI::Range(1, std::numeric_limits<int>::max()).description(""));
+        ->check(wholeNumberIn(1, std::numeric_limits<int>::max()));
     command->add_option("--energy-csv", options.energyCsvPath,
                         "Write each body's energy ledger, every step, to this CSV file")
         ->type_name("PATH");
@@ -70,11 +71,10 @@ CLI::App* addRunCommand(CLI::App& app, RunOptions& options)
     command->add_option("--dt", options.dt, "Time step, s (same as --set world.dt=S)")
         ->type_name("S");
     command->add_flag("--quiet,-q", options.quiet, "Print no per-event lines");
-    command
-        ->add_option("--threads", options.threads,
-                     "Threads to step the bodies on (default 0: one per core); the results are "
-                     "the same for any number")
-        ->check(CLI::NonNegativeNumber);
+    addThreadsOption(command, options.threads,
+                     "Threads to step the bodies on (default 0: one per core, at most " +
+                         std::to_string(kMaxThreads) + "); the results are the same for any "
+                         "number");
     command->add_flag("--hash", options.hash,
                       "Print a hash of the final state (FNV-1a 64 of every body's position, "
                       "orientation and velocities) to compare runs");

@@ -1,5 +1,6 @@
 #include "validate_command.hpp"
 
+#include "cli_options.hpp"
 #include "console.hpp"
 #include "output_file.hpp"
 #include "plot_command.hpp"
@@ -77,7 +78,7 @@ CLI::App* addValidateCommand(CLI::App& app, ValidateOptions& options)
         "validate", "Run the validation suite: tumble against closed-form mechanics");
     command->add_option("--dt", options.steps, "Time step of the pass/fail table, s (repeatable)")
         ->type_name("S")
-        ->check(CLI::PositiveNumber);
+        ->check(positiveNumber());
     command->add_option("--csv", options.csvPath, "Write every quantity at every step to CSV")
         ->type_name("PATH");
     command->add_option("--plot", options.plotDirectory,
