@@ -72,3 +72,34 @@ TEST(CliMessages, HelpAndVersionAndUnknownCommands)
 }
 
 } // namespace
+
+namespace {
+
+using namespace tumble::cli_test;
+
+// item 5: the console prints the double's digits, not a float's
+TEST_F(CliTest, ConsolePrintsTheDoublesOwnDigits)
+{
+    const std::string file = writeScenario("digits.toml",
+                                           "[world]\nduration = 0.01\n"
+                                           "[[body]]\nname = \"far\"\n"
+                                           "position = [123456.789, 5, 0]\n"
+                                           "[[body]]\nname = \"speck\"\nmass = 1e-6\n"
+                                           "size = [0.001, 0.001, 0.001]\nposition = [0, 5, 0]\n"
+                                           "[[impulse]]\nat = 0.005\nbody = \"speck\"\n"
+                                           "impulse = [0, 1e-7, 0]\n");
+    const Result result = runTumble({"run", file});
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_NE(result.output.find("position = vec3(123456.789000, "), std::string::npos)
+        << result.output;
+    EXPECT_EQ(result.output.find("123456.789062"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("mat3x3((6e+12, 0, 0), (0, 6e+12, 0), (0, 0, 6e+12))"),
+              std::string::npos)
+        << result.output;
+    EXPECT_EQ(result.output.find("6000000106496"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("impulse = vec3(0, 1e-07, 0) N s"), std::string::npos)
+        << result.output;
+    EXPECT_EQ(result.output.find("-0.000000"), std::string::npos) << result.output;
+}
+
+} // namespace
