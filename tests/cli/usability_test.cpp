@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -100,6 +103,128 @@ TEST_F(CliTest, ConsolePrintsTheDoublesOwnDigits)
     EXPECT_NE(result.output.find("impulse = vec3(0, 1e-07, 0) N s"), std::string::npos)
         << result.output;
     EXPECT_EQ(result.output.find("-0.000000"), std::string::npos) << result.output;
+}
+
+} // namespace
+
+namespace {
+
+using namespace tumble::cli_test;
+
+/// Runs `tumble` with PATH set to `path` only for that run.
+Result runWithPath(const std::string& path, std::initializer_list<std::string> arguments)
+{
+    const std::string saved = std::getenv("PATH") != nullptr ? std::getenv("PATH") : "";
+    setenv("PATH", path.c_str(), 1);
+    Result result = runTumble(arguments, Capture::StderrOnly);
+    setenv("PATH", saved.c_str(), 1);
+    return result;
+}
+
+/// A stand-in for gnuplot in `folder` that saves its standard input (the script) to `saved` and
+/// exits with `exitCode`.
+void writeFakeGnuplot(const fs::path& folder, const fs::path& saved, int exitCode)
+{
+    fs::create_directories(folder);
+    const fs::path program = folder / "gnuplot";
+    std::ofstream(program) << "#!/bin/sh\ncat > '" << saved.string() << "'\nexit " << exitCode
+                           << "\n";
+    fs::permissions(program, fs::perms::owner_all);
+}
+
+class CliPlot : public CliTest {
+protected:
+    /// The multi-body impulse scenario's state and energy CSV files.
+    void writeImpulseCsv()
+    {
+        const Result run = runTumble({"run", (kScenarioDir / "part2_task2_impulses.toml").string(),
+                                      "--quiet", "--csv", (dir() / "imp.csv").string(),
+                                      "--energy-csv", (dir() / "impe.csv").string()});
+        ASSERT_EQ(run.exitCode, 0) << run.output;
+    }
+};
+
+// item 2: a CSV of several bodies gets one curve per body, or the one --body names
+TEST_F(CliPlot, SeveralBodiesGiveOneCurvePerBody)
+{
+    writeImpulseCsv();
+    const fs::path script = dir() / "script.gp";
+    writeFakeGnuplot(dir() / "bin", script, 0);
+    const std::string path = (dir() / "bin").string() + ":/usr/bin:/bin";
+    const Result result = runWithPath(path, {"plot", (dir() / "imp.csv").string()});
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    const std::string text = readFile(script);
+    // each body's rows in a data block of its own, each drawn as a curve titled by its name
+    for (const std::string body : {"left", "left_spin", "stop", "reverse", "stop_spin", "stop_all"}) {
+        EXPECT_NE(text.find("title '" + body + "'"), std::string::npos) << body << "\n" << text;
+    }
+    EXPECT_NE(text.find("$body5 << EOD"), std::string::npos) << text;
+    EXPECT_EQ(text.find("NaN"), std::string::npos) << text;
+
+    const Result one =
+        runWithPath(path, {"plot", (dir() / "impe.csv").string(), "--body", "stop_spin"});
+    ASSERT_EQ(one.exitCode, 0) << one.output;
+    const std::string picked = readFile(script);
+    EXPECT_NE(picked.find("Energy ledger of stop_spin"), std::string::npos) << picked;
+    EXPECT_EQ(picked.find("$body0 << EOD"), std::string::npos) << picked;
+
+    const Result unknown =
+        runWithPath(path, {"plot", (dir() / "imp.csv").string(), "--body", "nobody"});
+    EXPECT_EQ(unknown.exitCode, 2) << unknown.output;
+    EXPECT_NE(unknown.output.find("tumble: error: --body: no body named \"nobody\""),
+              std::string::npos)
+        << unknown.output;
+}
+
+TEST_F(CliPlot, SeveralBodiesDrawAPngWithGnuplot)
+{
+    writeImpulseCsv();
+    const Result result = runTumble({"plot", (dir() / "imp.csv").string(),
+                                     (dir() / "impe.csv").string()});
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_EQ(readFile(dir() / "imp.png").substr(1, 3), "PNG");
+    EXPECT_EQ(readFile(dir() / "impe.png").substr(1, 3), "PNG");
+}
+
+// item 3: gnuplot runs without a shell, takes any file name, and failures say why
+TEST_F(CliPlot, FileNamesReachNoShell)
+{
+    writeImpulseCsv();
+    const std::string csv = readFile(dir() / "imp.csv");
+    for (const std::string name : {"a';touch INJECTED;'b.csv", "it's.csv", "$(touch X).csv"}) {
+        std::ofstream(dir() / name) << csv;
+        const Result result = runTumble({"plot", (dir() / name).string(), "--out", dir().string()});
+        EXPECT_EQ(result.exitCode, 0) << name << ": " << result.output;
+        fs::path png = dir() / name;
+        png.replace_extension(".png");
+        EXPECT_EQ(readFile(png).substr(1, 3), "PNG") << name;
+    }
+    EXPECT_FALSE(fs::exists("INJECTED"));
+    EXPECT_FALSE(fs::exists(dir() / "INJECTED"));
+    EXPECT_FALSE(fs::exists("X"));
+}
+
+TEST_F(CliPlot, AFailureGivesTheRealReason)
+{
+    writeImpulseCsv();
+    const std::string csv = (dir() / "imp.csv").string();
+    const Result missing = runWithPath((dir() / "empty").string(), {"plot", csv});
+    EXPECT_NE(missing.exitCode, 0);
+    EXPECT_NE(missing.output.find("cannot run gnuplot: No such file or directory"),
+              std::string::npos)
+        << missing.output;
+
+    writeFakeGnuplot(dir() / "bin", dir() / "script.gp", 3);
+    const Result failed = runWithPath((dir() / "bin").string(), {"plot", csv});
+    EXPECT_NE(failed.exitCode, 0);
+    EXPECT_NE(failed.output.find("gnuplot failed with exit status 3"), std::string::npos)
+        << failed.output;
+
+    // item 17: a missing CSV says so, with exit 2
+    const Result absent = runTumble({"plot", (dir() / "absent.csv").string()}, Capture::StderrOnly);
+    EXPECT_EQ(absent.exitCode, 2);
+    EXPECT_NE(absent.output.find("cannot open CSV: No such file or directory"), std::string::npos)
+        << absent.output;
 }
 
 } // namespace
