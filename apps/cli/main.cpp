@@ -11,6 +11,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstdio>
+
 int main(int argc, char** argv)
 {
     CLI::App app{"tumble: rigid cuboids falling, bouncing and sliding on a ground plane", "tumble"};
@@ -46,6 +48,11 @@ int main(int argc, char** argv)
         return tumble::cli::reportParseError(app, error, argc, argv);
     }
 
+    // lines written stay written: a process ended by a signal loses what stdio still buffers,
+    // so the console is line-buffered (not when `run --csv -` streams its CSV through stdout)
+    if (!(*run && runOptions.csvPath == "-")) {
+        std::setvbuf(stdout, nullptr, _IOLBF, 0);
+    }
     return tumble::cli::runReportingErrors([&] {
         if (*run) {
             return tumble::cli::runCommand(runOptions);
