@@ -228,3 +228,27 @@ TEST_F(CliPlot, AFailureGivesTheRealReason)
 }
 
 } // namespace
+
+namespace {
+
+using namespace tumble::cli_test;
+
+// item 9: a body inside the ground is bad input for run and check alike, with file, line, body
+TEST(CliGround, ABuriedBodyIsRejectedByRunAndCheck)
+{
+    const std::string file = (kScenarioDir / "face_down_drop.toml").string();
+    for (const char* command : {"run", "check"}) {
+        const Result result =
+            runTumble({command, file, "--set", "ground.height=5"}, Capture::StderrOnly);
+        EXPECT_EQ(result.exitCode, 2) << result.output;
+        EXPECT_EQ(lines(result.output).size(), 1u) << result.output;
+        EXPECT_NE(result.output.find("tumble: error: " + file + ":"), std::string::npos)
+            << result.output;
+        EXPECT_NE(result.output.find("body[0].position: "), std::string::npos) << result.output;
+        EXPECT_NE(result.output.find("below the ground (y = 5 m)"), std::string::npos)
+            << result.output;
+        EXPECT_NE(result.output.find("(body \"cube\")"), std::string::npos) << result.output;
+    }
+}
+
+} // namespace
