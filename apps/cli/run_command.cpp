@@ -96,6 +96,10 @@ int runCommand(const RunOptions& options)
     if (!options.dt.empty()) {
         overrides.push_back("world.dt=" + options.dt);
     }
+    // an output must not replace the scenario or another output (issue 14, item 11)
+    checkDistinctPaths(options.file, {{"--csv", options.csvPath},
+                                      {"--energy-csv", options.energyCsvPath},
+                                      {"--contacts-csv", options.contactsCsvPath}});
     scenario::Scenario loaded = scenario::loadScenario(options.file, overrides);
     loaded.settings.recordContacts = !options.contactsCsvPath.empty();
     loaded.settings.threads = options.threads;
@@ -127,7 +131,8 @@ int runCommand(const RunOptions& options)
     const InterruptGuard interruptGuard;
     long long lastSample = 0;
     for (long long i = 0; i < stepCount && InterruptGuard::received() == 0; ++i) {
-        const scenario::StepReport report = runner.step();
+        // the last step ends at the duration when that is not a multiple of dt (issue 14, item 12)
+        const scenario::StepReport report = runner.step(loaded.duration);
         console.printStep(runner, report);
         if (const auto bad = firstNonFiniteBody(runner)) {
             printError("the state of body " + runner.bodyName(*bad) +
@@ -152,11 +157,12 @@ int runCommand(const RunOptions& options)
                    formatFull(runner.time()) + " s after " + std::to_string(runner.stepCount()) +
                    " of " + std::to_string(stepCount) + " steps; output files hold the run up " +
                    "to that time");
-        if (csv && lastSample != runner.stepCount()) {
-            csv->writeSample(runner);
-        }
     } else {
         console.printUnusedImpulses(runner, runner.time());
+    }
+    // the CSV always ends with the final state, whatever --every
+    if (csv && lastSample != runner.stepCount()) {
+        csv->writeSample(runner);
     }
     console.printSummary(runner);
     if (options.hash) {

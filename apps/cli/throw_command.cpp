@@ -121,6 +121,9 @@ int throwCommand(const ThrowOptions& options)
         throw scenario::ScenarioError(scenario::SourceLocation{"tumble throw", 0}, "--replay",
                                       "--replay I and --out THROW.toml go together");
     }
+    checkDistinctPaths(options.file, {{"--csv", options.csvPath},
+                                      {"--summary-json", options.summaryJsonPath},
+                                      {"--out", options.outPath}});
     const MpiSession mpi;
     const scenario::Scenario loaded = loadThrowScenario(options);
     if (options.replay >= 0) {

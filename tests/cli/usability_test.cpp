@@ -252,3 +252,63 @@ TEST(CliGround, ABuriedBodyIsRejectedByRunAndCheck)
 }
 
 } // namespace
+
+namespace {
+
+using namespace tumble::cli_test;
+
+// item 11: an output may not overwrite the input or another output; nothing runs
+TEST_F(CliTest, OutputsMayNotOverwriteTheInputOrEachOther)
+{
+    const std::string scene = readFile(kScenarioDir / "face_down_drop.toml");
+    const std::string copy = writeScenario("copy.toml", scene);
+    const Result input = runTumble({"run", copy, "--quiet", "--csv", copy}, Capture::StderrOnly);
+    EXPECT_EQ(input.exitCode, 2) << input.output;
+    EXPECT_NE(input.output.find("tumble: error: --csv: " + copy + " is the scenario file"),
+              std::string::npos)
+        << input.output;
+    EXPECT_EQ(readFile(copy), scene) << "the scenario was replaced";
+
+    const std::string csv = (dir() / "s.csv").string();
+    const std::string sameCsv = (dir() / "." / "s.csv").string();
+    const Result twice =
+        runTumble({"run", copy, "--quiet", "--csv", csv, "--energy-csv", sameCsv},
+                  Capture::StderrOnly);
+    EXPECT_EQ(twice.exitCode, 2) << twice.output;
+    EXPECT_NE(twice.output.find("tumble: error: --energy-csv: "), std::string::npos)
+        << twice.output;
+    EXPECT_NE(twice.output.find("also the path of --csv"), std::string::npos) << twice.output;
+    EXPECT_FALSE(fs::exists(csv));
+
+    const Result dice = runTumble({"throw", kDice, "--throws", "2", "--csv", kDice},
+                                  Capture::StderrOnly);
+    EXPECT_EQ(dice.exitCode, 2) << dice.output;
+    // /dev/null may take several outputs
+    EXPECT_EQ(runTumble({"run", copy, "--quiet", "--csv", "/dev/null", "--energy-csv",
+                         "/dev/null"})
+                  .exitCode,
+              0);
+}
+
+// item 12: a duration that is not a multiple of dt ends at the duration, final CSV row included
+TEST_F(CliTest, ARunEndsAtItsDurationEvenBetweenSteps)
+{
+    const std::string csv = (dir() / "end.csv").string();
+    const Result result = runTumble({"run", (kScenarioDir / "face_down_drop.toml").string(),
+                                     "--dt", "0.1", "--duration", "0.25", "--quiet", "--csv", csv,
+                                     "--every", "2"});
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_NE(result.output.find("final state at t = 0.250000 s"), std::string::npos)
+        << result.output;
+    const std::vector<std::string> rows = lines(readFile(csv));
+    ASSERT_EQ(rows.size(), 4u) << readFile(csv);
+    EXPECT_EQ(rows[1].substr(0, 2), "0,");
+    EXPECT_EQ(rows[3].substr(0, 5), "0.25,") << rows[3];
+    // a multiple of dt still ends on a whole step
+    const Result whole = runTumble({"run", (kScenarioDir / "face_down_drop.toml").string(),
+                                    "--dt", "0.1", "--duration", "0.3", "--quiet"});
+    EXPECT_NE(whole.output.find("final state at t = 0.300000 s (3 steps)"), std::string::npos)
+        << whole.output;
+}
+
+} // namespace
