@@ -312,3 +312,19 @@ TEST_F(CliTest, ARunEndsAtItsDurationEvenBetweenSteps)
 }
 
 } // namespace
+
+namespace {
+
+using namespace tumble::cli_test;
+
+// item 6: validate compares at whole seconds, so a dt that does not divide one is refused
+TEST(CliValidate, AStepThatDoesNotDivideASecondIsRefused)
+{
+    expectUsageError({"validate", "--dt", "0.03", "--no-study"},
+                     "--dt: the validation cases compare at whole seconds");
+    const Result divides = runTumble({"validate", "--dt", "0.005", "--no-study"});
+    EXPECT_NE(divides.exitCode, 2) << divides.output;
+    EXPECT_NE(divides.output.find("validation at dt = 1/200 s"), std::string::npos);
+}
+
+} // namespace
