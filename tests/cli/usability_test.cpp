@@ -328,3 +328,21 @@ TEST(CliValidate, AStepThatDoesNotDivideASecondIsRefused)
 }
 
 } // namespace
+
+namespace {
+
+using namespace tumble::cli_test;
+
+// item 8: view --at has run's limits; the error comes before any window or capture
+TEST_F(CliTest, ViewAtIsCheckedLikeARunsDuration)
+{
+    const std::string png = (dir() / "x.png").string();
+    expectUsageError({"view", "--screenshot", png, "--at", "1e20"},
+                     "--at: the number of steps --at / dt must be at most 1e+09");
+    expectUsageError({"view", "--screenshot", png, "--at", "1e12"}, "--at:");
+    expectUsageError({"view", "--screenshot", png, "--at", "nan"}, "--at: must be a number");
+    expectUsageError({"view", "--screenshot", png, "--at", "inf"}, "--at: must be a number");
+    EXPECT_FALSE(fs::exists(png));
+}
+
+} // namespace
