@@ -1,14 +1,25 @@
 #!/usr/bin/env bash
-# Installs the Debian packages tumble needs to build and test, skipping those already installed.
+# Installs the Debian packages tumble needs, skipping those already installed.
+#   bash tools/install-deps.sh         everything: build and test all of it (tools/run-tests.sh, CI)
+#   bash tools/install-deps.sh --cli   only what the tumble program needs with the viewer, tests,
+#                                      benchmarks, peers and MPI off (tools/run-demo.sh)
 set -euo pipefail
 
-packages=(
+# The REQUIRED find_package calls of the CLI build: glm (top level), toml++ and Boost
+# (libs/scenario), CLI11 (apps/cli); OpenMP comes with g++. pkg-config is only asked for by the
+# viewer and the peers.
+cli_packages=(
     cmake
     ninja-build
     g++
     libglm-dev
     libcli11-dev
     libtomlplusplus-dev
+    libboost-dev
+)
+
+packages=(
+    "${cli_packages[@]}"
     libgtest-dev
     libgmock-dev
     # bench/: Google Benchmark micro benchmarks, and the peer engines of tumble bench --peers
@@ -20,9 +31,8 @@ packages=(
     pkg-config
     # tumble plot and tumble validate --plot draw their PNG files with gnuplot
     gnuplot-nox
-    # tumble throw: Boost.Math's chi-square and normal distributions (header-only), and MPI
-    # (mpirun -n P tumble throw; its CLI test runs mpirun); OpenMP comes with g++
-    libboost-dev
+    # tumble throw: MPI (mpirun -n P tumble throw; its CLI test runs mpirun); Boost.Math's
+    # distributions (libboost-dev) are in cli_packages
     libopenmpi-dev
     openmpi-bin
     # tools/ci-fuzz.sh: clang with libFuzzer and the sanitizer runtimes; llvm-symbolizer
@@ -41,6 +51,13 @@ packages=(
     libgl1-mesa-dri
     libglx-mesa0
 )
+
+if [[ "${1:-}" == "--cli" ]]; then
+    packages=("${cli_packages[@]}")
+elif [[ $# -gt 0 ]]; then
+    echo "install-deps: unknown argument $1 (give --cli or nothing)" >&2
+    exit 2
+fi
 
 missing=()
 for package in "${packages[@]}"; do

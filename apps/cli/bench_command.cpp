@@ -2,6 +2,7 @@
 // the ratio of each peer's cost per body-step to tumble's measured in the same run.
 #include "bench_command.hpp"
 
+#include "cli_options.hpp"
 #include "console.hpp"
 #include "throw_batch.hpp"
 
@@ -232,7 +233,7 @@ void printRows(const std::vector<BenchRow>& rows)
 {
     std::printf("%-4s %-14s %6s %7s %8s %5s %12s %14s %9s %11s %10s\n", "scen", "engine",
                 "bodies", "threads", "steps", "runs", "us/step", "ns/body-step", "at rest",
-                "bytes/body", "peer/tumble");
+                "bytes/body", "ratio");
     for (const BenchRow& row : rows) {
         if (!row.note.empty()) {
             std::printf("%-4s %-14s %6d %7s  %s\n", row.scenario.c_str(), row.engine.c_str(),
@@ -277,17 +278,17 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options)
         "bench", "Time the benchmark scenarios in tumble (and the peer engines with --peers)");
     command->add_option("--bodies", options.bodies, "Body counts of S4 (default 100,1000,4000)")
         ->delimiter(',')
-        ->check(CLI::Range(1, 1000000));
+        ->check(wholeNumberIn(1, 1000000));
     command->add_option("--threads", options.threads, "Thread counts for tumble (default 1,2)")
         ->delimiter(',')
-        ->check(CLI::Range(0, 1024));
+        ->check(wholeNumberIn(0, kMaxThreads, " (one per core)"));
     command->add_option("--duration", options.duration, "Simulated time of each scenario, s")
-        ->check(CLI::PositiveNumber);
+        ->check(positiveNumber());
     command->add_flag("--peers", options.peers,
                       "Also run Bullet, ODE and MuJoCo (those built in) on the same bodies");
     command->add_option("--throws", options.throws,
                         "Throws of dice_cube.toml timed at each thread count (0: none)")
-        ->check(CLI::Range(0L, 100000000L));
+        ->check(wholeNumberIn(0, 100000000));
     options.scenarioDir = TUMBLE_SCENARIO_DIR;
     command->add_option("--scenarios", options.scenarioDir,
                         "Folder with part3_task4_friction.toml, s4_tumbling_cuboids.toml and "
@@ -313,6 +314,14 @@ int benchCommand(const BenchOptions& options)
         for (const int threads : options.threads) {
             rows.push_back(runTumble(loaded, name, threads));
         }
+        // The handout drop at tumble run's default (threads = 0, one per core) beside one thread:
+        // a world of one body must not pay for threads, so the ratio shows a regression such as
+        // reading the core count from sysfs on every step (issue 14, item 1).
+        const bool defaultRow = name == "S1";
+        if (defaultRow && std::find(options.threads.begin(), options.threads.end(), 0) ==
+                           options.threads.end()) {
+            rows.push_back(runTumble(loaded, name, 0));
+        }
         // The same with sleeping off: every body is stepped to the end, resting or not.
         rows.push_back(runTumble(loaded, name, options.threads.front(), false));
         // The reference for the ratios: tumble on one thread, or the first thread count timed.
@@ -320,6 +329,12 @@ int benchCommand(const BenchOptions& options)
         for (std::size_t i = first; i < rows.size(); ++i) {
             if (rows[i].engine == "tumble" && (rows[i].threads == 1 || !reference)) {
                 reference = rows[i].nsPerBodyStep();
+            }
+        }
+        // the default-threads row of a one-body scene against the one-thread row (1.00: no cost)
+        for (std::size_t i = first; i < rows.size() && defaultRow; ++i) {
+            if (rows[i].engine == "tumble" && rows[i].threads == 0) {
+                rows[i].ratio = rows[i].nsPerBodyStep() / *reference;
             }
         }
 #ifdef TUMBLE_HAS_PEERS
@@ -346,6 +361,8 @@ int benchCommand(const BenchOptions& options)
                     "S4");
     }
     printRows(rows);
+    std::printf("ratio: a peer's ns/body-step over tumble's on one thread; for tumble at threads "
+                "0 (one per core, tumble run's default), its own over one thread's\n");
     for (const std::string& line : peerSettings) {
         std::printf("settings of %s\n", line.c_str());
     }

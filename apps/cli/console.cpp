@@ -1,16 +1,13 @@
 #include "console.hpp"
 
+#include "cli_options.hpp"
 #include "output_file.hpp"
 
 #include "tumble/scenario/scenario.hpp"
 #include "tumble/shape.hpp"
 
-// glm::to_string lives in an experimental extension; only the CLI uses it, for the handouts'
-// console format.
-#define GLM_ENABLE_EXPERIMENTAL
-#include <glm/gtx/string_cast.hpp>
-
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -23,27 +20,54 @@
 namespace tumble::cli {
 namespace {
 
-/// Components smaller than this print as 0.000000 anyway; snapping them to +0 avoids "-0.000000".
-constexpr float kPrintZero = 5e-7f;
+/// Magnitudes printed with six decimals; others with nine significant digits.
+constexpr Real kFixedLow = 1e-4;
+constexpr Real kFixedHigh = 1e9;
 
-float printable(Real value)
-{
-    const auto single = static_cast<float>(value);
-    return std::fabs(single) < kPrintZero ? 0.0f : single;
-}
-
-glm::vec3 printable(const Vec3& v) { return {printable(v.x), printable(v.y), printable(v.z)}; }
-
-std::string formatQuat(const Quat& q)
-{
-    return glm::to_string(glm::quat(printable(q.w), printable(q.x), printable(q.y), printable(q.z)));
-}
+/// Components of a vector or matrix smaller than this fraction of its largest are the rounding of
+/// a computation that should give zero (the x of a vertical impulse), and print as 0.000000.
+constexpr Real kRelativeZero = 1e-12;
 
 std::string formatPrintf(const char* format, Real value)
 {
     char buffer[64];
     std::snprintf(buffer, sizeof buffer, format, value);
     return buffer;
+}
+
+/// The components of a vector, quaternion or matrix, formatted together: %.6f of each double
+/// when the largest is from 1e-4 up to 1e9 (a component that rounds to zero prints as 0.000000,
+/// never -0.000000), else %.9g of each (a 1 mg body's inverse inertia 6e+12, its impulses 6e-07),
+/// with components below 1e-12 of the largest, rounding, printed as 0.
+template <std::size_t N>
+std::array<std::string, N> formatGroup(const std::array<Real, N>& values)
+{
+    Real largest = 0.0;
+    for (const Real value : values) {
+        largest = std::max(largest, std::fabs(value));
+    }
+    const bool fixed = largest == 0.0 || (largest >= kFixedLow && largest < kFixedHigh);
+    std::array<std::string, N> text;
+    for (std::size_t i = 0; i < N; ++i) {
+        const Real value = std::fabs(values[i]) <= kRelativeZero * largest ? 0.0 : values[i];
+        text[i] = fixed ? formatPrintf("%.6f", value) : formatPrintf("%.9g", value);
+        if (text[i] == "-0.000000") {
+            text[i] = "0.000000";
+        }
+    }
+    return text;
+}
+
+/// "(a, b, c)" in glm::to_string's layout.
+template <std::size_t N>
+std::string componentList(const std::array<std::string, N>& text, std::size_t first,
+                          std::size_t count)
+{
+    std::string list = "(";
+    for (std::size_t i = first; i < first + count; ++i) {
+        list += (i == first ? "" : ", ") + text[i];
+    }
+    return list + ")";
 }
 
 /// "1/240" when dt is the reciprocal of a whole number of steps per second, else empty.
@@ -61,16 +85,43 @@ std::string timePrefix(Real time) { return "t = " + formatFixed(time) + " s  "; 
 
 } // namespace
 
-std::string formatVec3(const Vec3& v) { return glm::to_string(printable(v)); }
+std::string formatVec3(const Vec3& v)
+{
+    return "vec3" + componentList(formatGroup(std::array<Real, 3>{v.x, v.y, v.z}), 0, 3);
+}
 
 std::string formatMat3(const Mat3& m)
 {
-    return glm::to_string(glm::mat3(printable(m[0]), printable(m[1]), printable(m[2])));
+    // formatted against the largest entry of the whole matrix, printed column by column
+    const std::array<std::string, 9> all = formatGroup(std::array<Real, 9>{
+        m[0][0], m[0][1], m[0][2], m[1][0], m[1][1], m[1][2], m[2][0], m[2][1], m[2][2]});
+    return "mat3x3(" + componentList(all, 0, 3) + ", " + componentList(all, 3, 3) + ", " +
+           componentList(all, 6, 3) + ")";
 }
+
+namespace {
+
+std::string formatQuat(const Quat& q)
+{
+    // glm::to_string's layout: quat(w, {x, y, z})
+    const std::array<std::string, 4> c = formatGroup(std::array<Real, 4>{q.w, q.x, q.y, q.z});
+    return "quat(" + c[0] + ", {" + c[1] + ", " + c[2] + ", " + c[3] + "})";
+}
+
+} // namespace
 
 std::string formatFixed(Real value)
 {
-    return formatPrintf("%.6f", std::fabs(value) < static_cast<Real>(kPrintZero) ? 0.0 : value);
+    // %.6f of the double where six decimals show its digits; %.9g where they would not (below
+    // 1e-4 they lose digits, from 1e9 they print digits no one reads); zero of either sign is 0
+    const Real magnitude = std::fabs(value);
+    if (magnitude == 0.0) {
+        return "0.000000";
+    }
+    if (magnitude < kFixedLow || magnitude >= kFixedHigh || !std::isfinite(value)) {
+        return formatPrintf("%.9g", value);
+    }
+    return formatPrintf("%.6f", value);
 }
 
 std::string formatFull(Real value) { return formatPrintf("%.17g", value); }
@@ -268,6 +319,9 @@ int runReportingErrors(const std::function<int()>& command)
     } catch (const OutputError& error) {
         printError(error.what());
         return kExitWriteFailure;
+    } catch (const UsageError& error) {
+        printError(error.what());
+        return kExitBadInput;
     } catch (const scenario::ScenarioError& error) {
         printError(error.what());
         return kExitBadInput;

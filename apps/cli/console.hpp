@@ -25,11 +25,13 @@ constexpr int kExitWriteFailure = 3;
 /// A run stopped by a signal: 128 + its number (130 for SIGINT, 143 for SIGTERM).
 constexpr int kExitSignalBase = 128;
 
-/// glm::to_string of the single-precision vector: "vec3(0.150000, 0.000000, -1.000000)".
+/// glm::to_string's layout with the double's digits: "vec3(0.150000, 0.000000, -1.000000)"; a
+/// component below 1e-12 of the largest is rounding and prints as 0.000000.
 std::string formatVec3(const Vec3& v);
-/// glm::to_string of the single-precision matrix, column by column: "mat3x3((...), (...), (...))".
+/// The same for a matrix, column by column: "mat3x3((...), (...), (...))".
 std::string formatMat3(const Mat3& m);
-/// Fixed notation with six decimals, as glm prints its components.
+/// Six decimals (%.6f of the double) from 1e-4 up to 1e9, nine significant digits (%.9g) outside
+/// that, "0.000000" for zero of either sign.
 std::string formatFixed(Real value);
 /// Shortest round-trip-safe form (%.17g), as the CSV writes numbers.
 std::string formatFull(Real value);

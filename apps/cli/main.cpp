@@ -1,6 +1,7 @@
 // tumble: the command-line program. Declares the commands; each lives in its own file.
 #include "bench_command.hpp"
 #include "check_command.hpp"
+#include "cli_options.hpp"
 #include "console.hpp"
 #include "plot_command.hpp"
 #include "run_command.hpp"
@@ -10,10 +11,13 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstdio>
+
 int main(int argc, char** argv)
 {
     CLI::App app{"tumble: rigid cuboids falling, bouncing and sliding on a ground plane", "tumble"};
     app.require_subcommand(1);
+    app.set_version_flag("--version", std::string("tumble ") + TUMBLE_VERSION);
 
     tumble::cli::RunOptions runOptions;
     tumble::cli::CheckOptions checkOptions;
@@ -30,14 +34,25 @@ int main(int argc, char** argv)
     tumble::cli::ViewOptions viewOptions;
     const CLI::App* view = tumble::cli::addViewCommand(app, viewOptions);
 
-    // CLI11 prints its own usage errors; every one of them exits with the bad-input code
+    // a bad command line is one line "tumble: error: ..." and exit 2, as for a bad scenario;
+    // help and --version print as CLI11 formats them
     try {
         app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& help) {
+        return app.exit(help);
+    } catch (const CLI::CallForAllHelp& help) {
+        return app.exit(help);
+    } catch (const CLI::CallForVersion& version) {
+        return app.exit(version);
     } catch (const CLI::ParseError& error) {
-        const int code = app.exit(error);
-        return code == 0 ? tumble::cli::kExitOk : tumble::cli::kExitBadInput;
+        return tumble::cli::reportParseError(app, error, argc, argv);
     }
 
+    // lines written stay written: a process ended by a signal loses what stdio still buffers,
+    // so the console is line-buffered (not when `run --csv -` streams its CSV through stdout)
+    if (!(*run && runOptions.csvPath == "-")) {
+        std::setvbuf(stdout, nullptr, _IOLBF, 0);
+    }
     return tumble::cli::runReportingErrors([&] {
         if (*run) {
             return tumble::cli::runCommand(runOptions);

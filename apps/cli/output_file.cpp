@@ -1,5 +1,7 @@
 #include "output_file.hpp"
 
+#include "interrupt.hpp"
+
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
@@ -40,10 +42,12 @@ OutputFile::OutputFile(const std::string& path) : m_path(path), m_toStdout(path 
     if (m_file == nullptr) {
         throw writeError(m_temporary.string());
     }
+    m_temporarySlot = registerTemporaryFile(m_temporary.string());
 }
 
 OutputFile::~OutputFile()
 {
+    unregisterTemporaryFile(m_temporarySlot);
     // an unfinished file is removed: only complete runs leave a file behind
     if (!m_toStdout && m_file != nullptr) {
         std::fclose(m_file);
@@ -72,6 +76,8 @@ void OutputFile::finish()
         errno = flushError;
     }
     const std::string written = m_direct ? m_path : m_temporary.string();
+    unregisterTemporaryFile(m_temporarySlot);
+    m_temporarySlot = -1;
     if (failed || closeFailed) {
         const OutputError problem = writeError(written);
         std::error_code ignored;

@@ -36,6 +36,8 @@ private:
     bool m_toStdout = false;
     /// Written in place: stdout or a device, nothing to rename.
     bool m_direct = false;
+    /// Slot of m_temporary in the interrupt handler's list (interrupt.hpp), or -1.
+    int m_temporarySlot = -1;
 };
 
 /// A name as one CSV field: quoted (with doubled quotes) only when it needs to be.

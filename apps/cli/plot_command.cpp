@@ -1,40 +1,92 @@
 #include "plot_command.hpp"
 
+#include "cli_options.hpp"
 #include "console.hpp"
+#include "output_file.hpp"
 
 #include "tumble/scenario/scenario.hpp"
 
-#include <cstdlib>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <csignal>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
+#include <map>
 #include <sstream>
 #include <stdexcept>
+#include <system_error>
+#include <vector>
+
+extern char** environ;
 
 namespace tumble::cli {
 namespace {
 
-/// Runs gnuplot on a script; gnuplot is a Debian package (gnuplot-nox) that tools/install-deps.sh
-/// installs.
-void runGnuplot(const std::string& script, const std::filesystem::path& scriptPath)
+/// Bodies drawn as separate curves in one plot; above this, --body must pick one.
+constexpr std::size_t kMostCurves = 12;
+
+/// Runs gnuplot without a shell (posix_spawnp with an argument vector), feeding it `script` on
+/// standard input, so no file name is ever parsed by a shell. Throws with the real reason.
+void runGnuplot(const std::string& script)
 {
-    {
-        std::ofstream file(scriptPath);
-        file << script;
-        if (!file) {
-            throw std::runtime_error("cannot write " + scriptPath.string());
-        }
+    int pipeEnds[2];
+    if (pipe(pipeEnds) != 0) {
+        throw std::runtime_error(std::string("cannot run gnuplot: pipe: ") + std::strerror(errno));
     }
-    const std::string command = "gnuplot '" + scriptPath.string() + "'";
-    const int status = std::system(command.c_str());
-    std::filesystem::remove(scriptPath);
-    if (status != 0) {
-        throw std::runtime_error("gnuplot failed (is gnuplot installed? tools/install-deps.sh "
-                                 "installs gnuplot-nox)");
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_adddup2(&actions, pipeEnds[0], STDIN_FILENO);
+    posix_spawn_file_actions_addclose(&actions, pipeEnds[0]);
+    posix_spawn_file_actions_addclose(&actions, pipeEnds[1]);
+    char program[] = "gnuplot";
+    char* const argv[] = {program, nullptr};
+    pid_t child = 0;
+    const int spawnError = posix_spawnp(&child, program, &actions, nullptr, argv, environ);
+    posix_spawn_file_actions_destroy(&actions);
+    close(pipeEnds[0]);
+    if (spawnError != 0) {
+        close(pipeEnds[1]);
+        throw std::runtime_error(std::string("cannot run gnuplot: ") + std::strerror(spawnError) +
+                                 (spawnError == ENOENT ? " (install the Debian package "
+                                                         "gnuplot-nox: bash tools/install-deps.sh)"
+                                                       : ""));
+    }
+    // a gnuplot that stops reading early must not kill tumble with SIGPIPE
+    const auto previous = std::signal(SIGPIPE, SIG_IGN);
+    std::size_t written = 0;
+    while (written < script.size()) {
+        const ssize_t count = write(pipeEnds[1], script.data() + written, script.size() - written);
+        if (count < 0 && errno == EINTR) {
+            continue;
+        }
+        if (count <= 0) {
+            break;
+        }
+        written += static_cast<std::size_t>(count);
+    }
+    close(pipeEnds[1]);
+    std::signal(SIGPIPE, previous);
+    int status = 0;
+    while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
+    }
+    if (WIFSIGNALED(status)) {
+        throw std::runtime_error("gnuplot was ended by signal " + std::to_string(WTERMSIG(status)));
+    }
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+        throw std::runtime_error("gnuplot failed with exit status " +
+                                 std::to_string(WEXITSTATUS(status)) +
+                                 " (its message is above)");
     }
 }
 
 std::string quoted(const std::string& text)
 {
+    // gnuplot's single-quoted strings take everything literally except '', a single quote
     std::string escaped;
     for (const char c : text) {
         escaped += (c == '\'' ? std::string("''") : std::string(1, c));
@@ -42,77 +94,227 @@ std::string quoted(const std::string& text)
     return "'" + escaped + "'";
 }
 
-std::string firstLine(const std::filesystem::path& path)
+/// The fields of one CSV line as tumble writes them (a field is quoted when it has a comma or a
+/// quote, quotes doubled inside).
+std::vector<std::string> csvFields(const std::string& line)
 {
-    std::ifstream file(path);
-    std::string line;
-    if (!file || !std::getline(file, line)) {
-        throw scenario::ScenarioError({path.string(), 0}, "", "cannot read a CSV header");
+    std::vector<std::string> fields(1);
+    bool inQuotes = false;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+        const char c = line[i];
+        if (inQuotes) {
+            if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+                fields.back() += '"';
+                ++i;
+            } else if (c == '"') {
+                inQuotes = false;
+            } else {
+                fields.back() += c;
+            }
+        } else if (c == '"') {
+            inQuotes = true;
+        } else if (c == ',') {
+            fields.emplace_back();
+        } else if (c != '\r') {
+            fields.back() += c;
+        }
     }
-    return line;
+    return fields;
 }
 
-/// The body named in the first data row: multi-body files are plotted for that body.
-std::string firstBody(const std::filesystem::path& path)
+/// A CSV written by `tumble run`: its header and each body's rows, in order of first appearance,
+/// with the body field replaced by the body's index so gnuplot reads only numbers and words.
+struct TumbleCsv {
+    std::string header;
+    std::vector<std::string> bodies;
+    std::vector<std::string> rows;
+};
+
+TumbleCsv readTumbleCsv(const std::filesystem::path& path)
 {
     std::ifstream file(path);
+    if (!file) {
+        throw scenario::ScenarioError({path.string(), 0}, "",
+                                      std::string("cannot open CSV: ") + std::strerror(errno));
+    }
+    TumbleCsv csv;
+    if (!std::getline(file, csv.header)) {
+        throw scenario::ScenarioError({path.string(), 1}, "", "the file is empty, not a CSV "
+                                                              "written by tumble run");
+    }
+    std::map<std::string, std::size_t> indexOf;
+    std::vector<std::string> rowsOf;
+    std::vector<std::ostringstream> blocks;
     std::string line;
-    std::getline(file, line);
-    if (!std::getline(file, line)) {
+    while (std::getline(file, line)) {
+        if (line.empty()) {
+            continue;
+        }
+        std::vector<std::string> fields = csvFields(line);
+        if (fields.size() < 2) {
+            continue;
+        }
+        const auto [found, inserted] = indexOf.emplace(fields[1], csv.bodies.size());
+        if (inserted) {
+            csv.bodies.push_back(fields[1]);
+            blocks.emplace_back();
+        }
+        fields[1] = std::to_string(found->second);
+        std::ostringstream& block = blocks[found->second];
+        for (std::size_t i = 0; i < fields.size(); ++i) {
+            block << (i == 0 ? "" : ",") << fields[i];
+        }
+        block << '\n';
+    }
+    if (csv.bodies.empty()) {
         throw scenario::ScenarioError({path.string(), 2}, "", "the CSV has no data rows");
     }
-    const std::size_t start = line.find(',') + 1;
-    return line.substr(start, line.find(',', start) - start);
+    for (const std::ostringstream& block : blocks) {
+        csv.rows.push_back(block.str());
+    }
+    return csv;
 }
 
-std::string scriptFor(const std::filesystem::path& csv, const std::filesystem::path& png)
+std::string joined(const std::vector<std::string>& names)
 {
-    const std::string header = firstLine(csv);
+    std::string text;
+    for (std::size_t i = 0; i < names.size() && i < kMostCurves; ++i) {
+        text += (i == 0 ? "" : ", ") + names[i];
+    }
+    return names.size() > kMostCurves ? text + ", ..." : text;
+}
+
+/// The indices of the bodies to draw: the one --body names, else every body (at most
+/// kMostCurves).
+std::vector<std::size_t> chosenBodies(const TumbleCsv& csv, const std::filesystem::path& path,
+                                      const std::string& body)
+{
+    if (!body.empty()) {
+        for (std::size_t i = 0; i < csv.bodies.size(); ++i) {
+            if (csv.bodies[i] == body) {
+                return {i};
+            }
+        }
+        throw UsageError("--body", "no body named \"" + body + "\" in " + path.string() +
+                                       " (bodies: " + joined(csv.bodies) + ")");
+    }
+    if (csv.bodies.size() > kMostCurves) {
+        throw UsageError("--body", path.string() + " has " + std::to_string(csv.bodies.size()) +
+                                       " bodies, too many curves for one plot; pick one with "
+                                       "--body NAME (bodies: " +
+                                       joined(csv.bodies) + ")");
+    }
+    std::vector<std::size_t> all(csv.bodies.size());
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        all[i] = i;
+    }
+    return all;
+}
+
+/// One plotted quantity: a gnuplot `using` expression, its title and style.
+struct Curve {
+    std::string expression;
+    std::string title;
+    std::string style;
+};
+
+std::string scriptFor(const std::filesystem::path& path, const std::filesystem::path& png,
+                      const std::string& body)
+{
+    const TumbleCsv csv = readTumbleCsv(path);
+    std::string kind;
+    std::string ylabel;
+    std::vector<Curve> curves;
+    // with several bodies, one curve of the main quantity per body
+    Curve perBody;
+    if (csv.header.rfind("time,body,kinetic_linear", 0) == 0) {
+        kind = "Energy ledger";
+        ylabel = "energy (J)";
+        curves = {{"6", "total", "lines lw 3"},
+                  {"3", "kinetic (linear)", "lines"},
+                  {"4", "kinetic (rotational)", "lines"},
+                  {"5", "potential", "lines"},
+                  {"7", "removed: normal impulses", "lines"},
+                  {"8", "removed: friction", "lines"},
+                  {"($9+$10+$11)", "removed: correction + integration + rest", "lines"},
+                  {"12", "added by impulses", "lines"},
+                  {"($6+$7+$8+$9+$10+$11-$12)", "total + removed - added (= initial)",
+                   "lines dt 2 lw 2"}};
+        perBody = {"6", "total energy", "lines lw 2"};
+    } else if (csv.header.rfind("time,body,x,y,z", 0) == 0) {
+        kind = "State";
+        ylabel = "height (m), speed (m/s), spin (rad/s)";
+        curves = {{"4", "height y", "lines lw 2"},
+                  {"(sqrt($10**2+$11**2+$12**2))", "speed |v|", "lines lw 2"},
+                  {"(sqrt($13**2+$14**2+$15**2))", "spin |w|", "lines lw 2"}};
+        perBody = {"4", "height y", "lines lw 2"};
+    } else if (csv.header.rfind("time,body,phase,vertex", 0) == 0) {
+        kind = "Contact ledger";
+        ylabel = "impulse (N s)";
+        curves = {{"22", "normal", "points pt 7 ps 0.5"},
+                  {"(sqrt($23**2+$24**2+$25**2))", "|friction|", "points pt 7 ps 0.5"}};
+        perBody = {"22", "normal impulse", "points pt 7 ps 0.5"};
+    } else {
+        throw scenario::ScenarioError({path.string(), 1}, "",
+                                      "not a CSV written by tumble run (unknown header)");
+    }
+    const std::vector<std::size_t> chosen = chosenBodies(csv, path, body);
+
     std::ostringstream script;
     script << "set terminal pngcairo size 1200,700 font 'sans,11'\n"
            << "set output " << quoted(png.string()) << "\n"
            << "set termoption noenhanced\n"
            << "set datafile separator ','\nset key below maxcols 3\nset grid\n"
-           << "set xlabel 'time (s)'\n";
-    const std::string data = csv.string();
-    const std::string body = firstBody(csv);
-    // Column c of the first body's rows only (NaN elsewhere, which gnuplot skips).
-    const auto of = [&](const std::string& expression) {
-        return "(strcol(2) eq " + quoted(body) + " ? " + expression + " : NaN)";
-    };
-    if (header.rfind("time,body,kinetic_linear", 0) == 0) {
-        script << "set title 'Energy ledger of " << body << ": " << csv.filename().string()
-               << "'\n"
-               << "set ylabel 'energy (J)'\n"
-               << "plot " << quoted(data) << " using 1:" << of("$6") << " with lines lw 3 title 'total',"
-               << quoted(data) << " using 1:" << of("$3") << " with lines title 'kinetic (linear)',"
-               << quoted(data) << " using 1:" << of("$4") << " with lines title 'kinetic (rotational)',"
-               << quoted(data) << " using 1:" << of("$5") << " with lines title 'potential',"
-               << quoted(data) << " using 1:" << of("$7") << " with lines title 'removed: normal impulses',"
-               << quoted(data) << " using 1:" << of("$8") << " with lines title 'removed: friction',"
-               << quoted(data) << " using 1:" << of("($9+$10+$11)")
-               << " with lines title 'removed: correction + integration + rest',"
-               << quoted(data) << " using 1:" << of("$12") << " with lines title 'added by impulses',"
-               << quoted(data) << " using 1:" << of("($6+$7+$8+$9+$10+$11-$12)")
-               << " with lines dt 2 lw 2 title 'total + removed - added (= initial)'\n";
-    } else if (header.rfind("time,body,x,y,z", 0) == 0) {
-        script << "set title 'State of " << body << ": " << csv.filename().string() << "'\n"
-               << "set ylabel 'height (m), speed (m/s), spin (rad/s)'\n"
-               << "plot " << quoted(data) << " using 1:" << of("$4") << " with lines lw 2 title 'height y', "
-               << quoted(data) << " using 1:" << of("sqrt($10**2+$11**2+$12**2)")
-               << " with lines lw 2 title 'speed |v|', " << quoted(data) << " using 1:"
-               << of("sqrt($13**2+$14**2+$15**2)") << " with lines lw 2 title 'spin |w|'\n";
-    } else if (header.rfind("time,body,phase,vertex", 0) == 0) {
-        script << "set title 'Contact ledger: " << csv.filename().string() << "'\n"
-               << "set ylabel 'impulse (N s)'\n"
-               << "plot " << quoted(data) << " using 1:" << of("$22")
-               << " with points pt 7 ps 0.5 title 'normal', " << quoted(data) << " using 1:"
-               << of("sqrt($23**2+$24**2+$25**2)") << " with points pt 7 ps 0.5 title '|friction|'\n";
-    } else {
-        throw scenario::ScenarioError({csv.string(), 1}, "",
-                                      "not a CSV written by tumble run (unknown header)");
+           << "set xlabel 'time (s)'\nset ylabel " << quoted(ylabel) << "\n";
+    // each body's rows as its own data block: a curve over rows interleaved with other bodies'
+    // (NaN there) had no two neighbouring points and drew nothing
+    for (const std::size_t i : chosen) {
+        script << "$body" << i << " << EOD\n" << csv.rows[i] << "EOD\n";
     }
+    const auto column = [](const std::string& expression) { return "1:" + expression; };
+    if (chosen.size() == 1) {
+        const std::size_t i = chosen.front();
+        script << "set title " << quoted(kind + " of " + csv.bodies[i] + ": " +
+                                         path.filename().string())
+               << "\nplot ";
+        for (std::size_t c = 0; c < curves.size(); ++c) {
+            script << (c == 0 ? "" : ", ") << "$body" << i << " using "
+                   << column(curves[c].expression) << " with " << curves[c].style << " title "
+                   << quoted(curves[c].title);
+        }
+    } else {
+        script << "set title " << quoted(kind + " of " + std::to_string(chosen.size()) +
+                                         " bodies (" + perBody.title + "): " +
+                                         path.filename().string())
+               << "\nplot ";
+        for (std::size_t c = 0; c < chosen.size(); ++c) {
+            script << (c == 0 ? "" : ", ") << "$body" << chosen[c] << " using "
+                   << column(perBody.expression) << " with " << perBody.style << " title "
+                   << quoted(csv.bodies[chosen[c]]);
+        }
+    }
+    script << "\n";
     return script.str();
+}
+
+/// The output folder, made if missing; exit code 3 when it cannot be.
+void createDirectories(const std::string& directory)
+{
+    std::error_code error;
+    std::filesystem::create_directories(directory, error);
+    if (error) {
+        throw OutputError("cannot write " + directory + ": " + error.message());
+    }
+}
+
+/// Fails with exit code 3 before gnuplot runs when the PNG cannot be written there.
+void checkWritable(const std::filesystem::path& png)
+{
+    const std::filesystem::path folder =
+        png.parent_path().empty() ? std::filesystem::path(".") : png.parent_path();
+    if (access(folder.c_str(), W_OK) != 0) {
+        throw OutputError("cannot write " + png.string() + ": " + std::strerror(errno));
+    }
 }
 
 } // namespace
@@ -126,6 +328,9 @@ CLI::App* addPlotCommand(CLI::App& app, PlotOptions& options)
         ->type_name("");
     command->add_option("--out", options.outputDirectory, "Folder for the PNG files")
         ->type_name("DIR");
+    command->add_option("--body", options.body,
+                        "Plot only this body (default: every body, one curve each)")
+        ->type_name("NAME");
     return command;
 }
 
@@ -136,10 +341,12 @@ int plotCommand(const PlotOptions& options)
         std::filesystem::path png = csv;
         png.replace_extension(".png");
         if (!options.outputDirectory.empty()) {
-            std::filesystem::create_directories(options.outputDirectory);
+            createDirectories(options.outputDirectory);
             png = std::filesystem::path(options.outputDirectory) / png.filename();
         }
-        runGnuplot(scriptFor(csv, png), png.string() + ".gp");
+        const std::string script = scriptFor(csv, png, options.body);
+        checkWritable(png);
+        runGnuplot(script);
         std::cout << "wrote " << png.string() << '\n';
     }
     return kExitOk;
@@ -148,7 +355,7 @@ int plotCommand(const PlotOptions& options)
 void plotConvergence(const std::string& directory, const std::vector<Real>& steps,
                      const std::vector<ConvergenceSeries>& series)
 {
-    std::filesystem::create_directories(directory);
+    createDirectories(directory);
     const std::filesystem::path png = std::filesystem::path(directory) / "convergence.png";
     std::ostringstream script;
     script << "set terminal pngcairo size 1200,800 font 'sans,11'\n"
@@ -173,7 +380,8 @@ void plotConvergence(const std::string& directory, const std::vector<Real>& step
         }
         script << "e\n";
     }
-    runGnuplot(script.str(), png.string() + ".gp");
+    checkWritable(png);
+    runGnuplot(script.str());
     std::cout << "wrote " << png.string() << '\n';
 }
 

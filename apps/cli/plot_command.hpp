@@ -15,6 +15,8 @@ struct PlotOptions {
     std::vector<std::string> files;
     /// Folder for the PNG files; empty means next to each CSV.
     std::string outputDirectory;
+    /// The body to plot; empty means every body, one curve each.
+    std::string body;
 };
 
 CLI::App* addPlotCommand(CLI::App& app, PlotOptions& options);

@@ -1,5 +1,6 @@
 #include "run_command.hpp"
 
+#include "cli_options.hpp"
 #include "console.hpp"
 #include "csv_writer.hpp"
 #include "interrupt.hpp"
@@ -57,7 +58,7 @@ CLI::App* addRunCommand(CLI::App& app, RunOptions& options)
         ->type_name("PATH");
     command->add_option("--every", options.every, "Steps between CSV samples (>= 1, default 1)")
         ->type_name("N")
-        ->check(CLI::Range(1, std::numeric_limits<int>::max()).description(""));
+        ->check(wholeNumberIn(1, std::numeric_limits<int>::max()));
     command->add_option("--energy-csv", options.energyCsvPath,
                         "Write each body's energy ledger, every step, to this CSV file")
         ->type_name("PATH");
@@ -70,11 +71,10 @@ CLI::App* addRunCommand(CLI::App& app, RunOptions& options)
     command->add_option("--dt", options.dt, "Time step, s (same as --set world.dt=S)")
         ->type_name("S");
     command->add_flag("--quiet,-q", options.quiet, "Print no per-event lines");
-    command
-        ->add_option("--threads", options.threads,
-                     "Threads to step the bodies on (default 0: one per core); the results are "
-                     "the same for any number")
-        ->check(CLI::NonNegativeNumber);
+    addThreadsOption(command, options.threads,
+                     "Threads to step the bodies on (default 0: one per core, at most " +
+                         std::to_string(kMaxThreads) + "); the results are the same for any "
+                         "number");
     command->add_flag("--hash", options.hash,
                       "Print a hash of the final state (FNV-1a 64 of every body's position, "
                       "orientation and velocities) to compare runs");
@@ -96,6 +96,10 @@ int runCommand(const RunOptions& options)
     if (!options.dt.empty()) {
         overrides.push_back("world.dt=" + options.dt);
     }
+    // an output must not replace the scenario or another output (issue 14, item 11)
+    checkDistinctPaths(options.file, {{"--csv", options.csvPath},
+                                      {"--energy-csv", options.energyCsvPath},
+                                      {"--contacts-csv", options.contactsCsvPath}});
     scenario::Scenario loaded = scenario::loadScenario(options.file, overrides);
     loaded.settings.recordContacts = !options.contactsCsvPath.empty();
     loaded.settings.threads = options.threads;
@@ -127,7 +131,8 @@ int runCommand(const RunOptions& options)
     const InterruptGuard interruptGuard;
     long long lastSample = 0;
     for (long long i = 0; i < stepCount && InterruptGuard::received() == 0; ++i) {
-        const scenario::StepReport report = runner.step();
+        // the last step ends at the duration when that is not a multiple of dt (issue 14, item 12)
+        const scenario::StepReport report = runner.step(loaded.duration);
         console.printStep(runner, report);
         if (const auto bad = firstNonFiniteBody(runner)) {
             printError("the state of body " + runner.bodyName(*bad) +
@@ -152,11 +157,12 @@ int runCommand(const RunOptions& options)
                    formatFull(runner.time()) + " s after " + std::to_string(runner.stepCount()) +
                    " of " + std::to_string(stepCount) + " steps; output files hold the run up " +
                    "to that time");
-        if (csv && lastSample != runner.stepCount()) {
-            csv->writeSample(runner);
-        }
     } else {
         console.printUnusedImpulses(runner, runner.time());
+    }
+    // the CSV always ends with the final state, whatever --every
+    if (csv && lastSample != runner.stepCount()) {
+        csv->writeSample(runner);
     }
     console.printSummary(runner);
     if (options.hash) {

@@ -1,8 +1,10 @@
 // Running a block of throws on K threads (OpenMP, a fixed chunking) with an optional progress bar.
 #include "throw_batch.hpp"
 
+#include "cli_options.hpp"
 #include "interrupt.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -75,7 +77,7 @@ private:
 int defaultThreadCount()
 {
 #if TUMBLE_HAS_OPENMP
-    return omp_get_num_procs();
+    return std::clamp(omp_get_num_procs(), 1, kMaxThreads);
 #else
     return 1;
 #endif

@@ -1,5 +1,6 @@
 #include "throw_command.hpp"
 
+#include "cli_options.hpp"
 #include "console.hpp"
 #include "interrupt.hpp"
 #include "mpi_session.hpp"
@@ -90,12 +91,11 @@ CLI::App* addThrowCommand(CLI::App& app, ThrowOptions& options)
         ->type_name("");
     command->add_option("--throws", options.throws, "Number of throws (>= 1, default 1000)")
         ->type_name("N")
-        ->check(CLI::Range(std::int64_t{1}, std::numeric_limits<std::int64_t>::max() / 2)
-                    .description(""));
+        ->check(wholeNumberIn(1, std::numeric_limits<std::int64_t>::max() / 2));
     command->add_option("--seed", options.seed, "Seed of the draws (default 1)")->type_name("S");
-    command->add_option("--threads", options.threads, "Threads (default: every core)")
-        ->type_name("K")
-        ->check(CLI::Range(1, 4096).description(""));
+    addThreadsOption(command, options.threads,
+                     "Threads (default 0: one per core, at most " + std::to_string(kMaxThreads) +
+                         ")");
     command->add_option("--csv", options.csvPath, "Write one row per throw to this CSV file")
         ->type_name("PATH");
     command->add_option("--summary-json", options.summaryJsonPath,
@@ -104,8 +104,7 @@ CLI::App* addThrowCommand(CLI::App& app, ThrowOptions& options)
     command->add_option("--replay", options.replay,
                         "Write throw I as an ordinary scenario file (with --out) and stop")
         ->type_name("I")
-        ->check(CLI::Range(std::int64_t{0}, std::numeric_limits<std::int64_t>::max())
-                    .description(""));
+        ->check(wholeNumberIn(0, std::numeric_limits<std::int64_t>::max()));
     command->add_option("--out", options.outPath, "The scenario file --replay writes")
         ->type_name("THROW.toml");
     command->add_option("--set", options.overrides,
@@ -122,6 +121,9 @@ int throwCommand(const ThrowOptions& options)
         throw scenario::ScenarioError(scenario::SourceLocation{"tumble throw", 0}, "--replay",
                                       "--replay I and --out THROW.toml go together");
     }
+    checkDistinctPaths(options.file, {{"--csv", options.csvPath},
+                                      {"--summary-json", options.summaryJsonPath},
+                                      {"--out", options.outPath}});
     const MpiSession mpi;
     const scenario::Scenario loaded = loadThrowScenario(options);
     if (options.replay >= 0) {

@@ -1,5 +1,6 @@
 #include "validate_command.hpp"
 
+#include "cli_options.hpp"
 #include "console.hpp"
 #include "output_file.hpp"
 #include "plot_command.hpp"
@@ -77,7 +78,7 @@ CLI::App* addValidateCommand(CLI::App& app, ValidateOptions& options)
         "validate", "Run the validation suite: tumble against closed-form mechanics");
     command->add_option("--dt", options.steps, "Time step of the pass/fail table, s (repeatable)")
         ->type_name("S")
-        ->check(CLI::PositiveNumber);
+        ->check(positiveNumber());
     command->add_option("--csv", options.csvPath, "Write every quantity at every step to CSV")
         ->type_name("PATH");
     command->add_option("--plot", options.plotDirectory,
@@ -90,6 +91,16 @@ CLI::App* addValidateCommand(CLI::App& app, ValidateOptions& options)
 
 int validateCommand(const ValidateOptions& options)
 {
+    // the cases compare at whole seconds (free fall at t = 1 s, sliding for 3 s, ...): a step that
+    // does not divide a second compared at a time it never simulated (issue 14, item 6)
+    for (const Real dt : options.steps) {
+        const Real perSecond = 1.0 / dt;
+        if (std::fabs(perSecond - std::round(perSecond)) > 1e-9 * perSecond) {
+            throw UsageError("--dt", "the validation cases compare at whole seconds, so dt must "
+                                     "be 1/n s for a whole number n (0.025 = 1/40, 0.01 = 1/100), "
+                                     "got " + formatShort(dt) + " = 1/" + formatShort(perSecond));
+        }
+    }
     const std::vector<Real> tableSteps =
         options.steps.empty() ? std::vector<Real>{1.0 / 240.0} : options.steps;
     const std::vector<Real> studySteps = validation::convergenceSteps();

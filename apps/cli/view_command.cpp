@@ -1,5 +1,6 @@
 #include "view_command.hpp"
 
+#include "cli_options.hpp"
 #include "console.hpp"
 
 #include "tumble/scenario/runner.hpp"
@@ -9,6 +10,7 @@
 #endif
 
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <optional>
 #include <sstream>
@@ -33,6 +35,27 @@ std::optional<std::pair<int, int>> parseSize(const std::string& text)
         return std::nullopt;
     }
     return std::make_pair(width, height);
+}
+
+/// The most steps --at may ask for: run's limit on duration / dt (docs/scenario-format.md).
+constexpr Real kMostSteps = 1e9;
+
+/// --at within run's limits for the scenario's dt, or exit 2 (issue 14, item 8): 1e20 and nan
+/// used to capture t = 0, and 1e12 ran until killed.
+void checkCaptureTime(const ViewOptions& options)
+{
+    const Real at = std::strtod(options.at.c_str(), nullptr);
+    const std::string file = options.file.empty()
+                                 ? std::string(TUMBLE_SCENARIO_DIR) + "/part3_task4_friction.toml"
+                                 : options.file;
+    const scenario::Scenario loaded = scenario::loadScenario(file, options.overrides);
+    if (at / loaded.dt > kMostSteps) {
+        char steps[32];
+        std::snprintf(steps, sizeof steps, "%.3g", at / loaded.dt);
+        throw UsageError("--at", "the number of steps --at / dt must be at most 1e+09, got " +
+                                     std::string(steps) + " (dt = " + formatFull(loaded.dt) +
+                                     " s)");
+    }
 }
 
 #if TUMBLE_HAS_VIEWER
@@ -73,7 +96,7 @@ CLI::App* addViewCommand(CLI::App& app, ViewOptions& options)
         ->type_name("OUT.png");
     command->add_option("--at", options.at, "Simulated time to capture, or to open paused at, s (default 0)")
         ->type_name("T")
-        ->check(CLI::NonNegativeNumber.description(""));
+        ->check(nonNegativeNumber());
     command->add_option("--size", options.size, "Window or image size (default 1280x720)")
         ->type_name("WxH");
     command->add_flag("--no-ui", options.noUi, "Draw the 3D view without the panels");
@@ -91,6 +114,9 @@ int viewCommand(const ViewOptions& options)
         printError("--size: expected WxH with each side from " + std::to_string(kMinSide) +
                    " to " + std::to_string(kMaxSide) + " pixels, got \"" + options.size + "\"");
         return kExitBadInput;
+    }
+    if (!options.at.empty()) {
+        checkCaptureTime(options);
     }
 #if TUMBLE_HAS_VIEWER
     viewer::ViewerOptions viewerOptions;

@@ -231,11 +231,13 @@ TEST_F(CliTest, CsvHasHeaderAndOneRowPerBodyPerSample)
 {
     const std::string file = writeScenario("good.toml", sceneWith(0, ""));
     const fs::path csv = dir() / "out.csv";
-    // 0.5 s at dt = 0.01 is 50 steps: samples at steps 0, 7, 14, ..., 49 -> 8 rows
+    // 0.5 s at dt = 0.01 is 50 steps: samples at steps 0, 7, 14, ..., 49, and the final state at
+    // step 50 (issue 14, item 12: --every N still writes the final row) -> 9 rows
     const Result result = runTumble({"run", file, "--csv", csv.string(), "--every", "7"});
     ASSERT_EQ(result.exitCode, 0) << result.output;
     const std::vector<std::string> rows = lines(readFile(csv));
-    ASSERT_EQ(rows.size(), 1u + 8u);
+    ASSERT_EQ(rows.size(), 1u + 9u);
+    EXPECT_EQ(rows.back().rfind("0.5,rb,", 0), 0u) << rows.back();
     EXPECT_EQ(rows[0], "time,body,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,kinetic,potential");
     EXPECT_EQ(rows[1].rfind("0,rb,0,5,0,1,0,0,0,0,0,0,0,0,0,0,", 0), 0u) << rows[1];
     EXPECT_EQ(rows[2].rfind("0.070000000000000007,rb,", 0), 0u) << rows[2];

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -139,6 +140,49 @@ TEST(CliFaults, SigintStopsAtTheNextStepAndLeavesACompleteFile)
 TEST(CliFaults, SigtermStopsAtTheNextStepAndLeavesACompleteFile)
 {
     expectStopsCleanlyOn(SIGTERM, 143, "SIGTERM");
+}
+
+// issue 14, item 7: GNU timeout signals the child and then its group, two SIGTERMs at once; they
+// are one request, the console lines stay written and no .tmp is left behind
+TEST(CliFaults, UnderTimeoutARunLeavesItsReportAndACompleteFile)
+{
+    const fs::path folder = scratch("under_timeout");
+    fs::create_directories(folder);
+    fs::remove(folder / "t.csv");
+    const std::string command =
+        "cd '" + folder.string() + "' && timeout 2 '" + std::string(TUMBLE_EXE) + "' run '" +
+        std::string(TUMBLE_SCENARIO_DIR) +
+        "/torque_free_top.toml' --duration 100000 --quiet --csv t.csv > t.out 2> t.err";
+    const int status = std::system(command.c_str());
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 124) << "timeout reports that it stopped the command";
+    const std::string out = readFile(folder / "t.out");
+    EXPECT_NE(out.find("scenario: "), std::string::npos) << out;
+    EXPECT_NE(out.find("final state at t = "), std::string::npos) << out;
+    EXPECT_NE(readFile(folder / "t.err").find("interrupted by SIGTERM"), std::string::npos);
+    EXPECT_FALSE(fs::exists(folder / "t.csv.tmp"));
+    ASSERT_TRUE(fs::exists(folder / "t.csv"));
+    expectCompleteCsv(readFile(folder / "t.csv"));
+}
+
+TEST(CliFaults, TwoSignalsAtOnceAreOneRequest)
+{
+    const fs::path csv = scratch("two_at_once.csv");
+    fs::remove(csv);
+    const pid_t pid = start({"run", kScenario, "--quiet", "--set", "world.sleep=false",
+                             "--duration", "1e5", "--csv", csv.string()},
+                            scratch("two_out.txt").string(), scratch("two_err.txt").string());
+    const fs::path temporary = csv.string() + ".tmp";
+    for (int i = 0; i < 200 && !(fs::exists(temporary) && fs::file_size(temporary) > 100000); ++i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    kill(pid, SIGINT);
+    kill(pid, SIGINT);
+    kill(pid, SIGTERM);
+    EXPECT_EQ(waitFor(pid), 130);
+    EXPECT_NE(readFile(scratch("two_out.txt")).find("final state at t = "), std::string::npos);
+    EXPECT_FALSE(fs::exists(temporary));
+    expectCompleteCsv(readFile(csv));
 }
 
 TEST(CliFaults, AFullDiskIsAClearErrorWithExitCodeThree)

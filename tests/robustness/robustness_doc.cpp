@@ -195,8 +195,11 @@ std::string document()
            "repeated runs in one process, in any order, and two worlds stepped interleaved match "
            "one stepped alone.\n"
         << "- `tools/ci-determinism.sh`: builds `tumble` with -O0 (Debug) and -O2, both with "
-           "-ffp-contract=off, and compares `tumble run --hash` on every scenario; CI runs it. "
-           "(One thread only so far: there is no parallel stepping to vary.)\n\n";
+           "-ffp-contract=off, and compares `tumble run --hash` on every scenario; CI runs it.\n"
+        << "- Threads: the world steps its bodies in fixed batches over OpenMP threads (`tumble run "
+           "--threads K`, 0 = one per core, at most 256), so the results are bit-identical for any "
+           "thread count (`tests/cli/cli_test.cpp`, CliRun.OneAndTwoThreadsWriteByteIdenticalCsv); "
+           "`tumble throw` gives the same counts for any number of threads or MPI ranks.\n\n";
 
     out << "## Faults while writing\n\n"
         << "`tests/robustness/cli_faults_test.cpp` runs the `tumble` program:\n\n"
@@ -205,7 +208,10 @@ std::string document()
         << "- SIGINT or SIGTERM stops the run at the next step boundary: tumble says at which "
            "simulated time it stopped, writes the state at that time, renames complete files "
            "into place (each row whole, up to that time) and exits with 130 (SIGINT) or 143 "
-           "(SIGTERM); a second signal ends it at once, leaving the previous file;\n"
+           "(SIGTERM); signals within 0.25 s of the first are the same request (GNU `timeout` "
+           "signals the child and then its group), a later one ends it at once, removing its "
+           "`.tmp` files and leaving the previous file; the console is line-buffered, so the lines "
+           "written before stay written (`timeout 2 tumble run ... > t.out` keeps its report);\n"
         << "- a full disk (`/dev/full`) or an unwritable path gives `tumble: error: cannot write "
            "...: <reason>` and exit code 3, and no partial file at PATH.\n\n";
 

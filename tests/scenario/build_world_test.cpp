@@ -63,7 +63,8 @@ TEST(BuildWorld, SettingsAndGroundReachTheWorld)
                                             "solver_iterations = 7\n"
                                             "[ground]\n"
                                             "height = 0.25\n"
-                                            "[[body]]\n",
+                                            "[[body]]\n"
+                                            "position = [0, 1.25, 0]\n",
                                             "scene.toml");
     const BuiltWorld built = buildWorld(scenario);
     const WorldSettings& settings = built.world.settings();

@@ -59,9 +59,10 @@ TEST(Overrides, GroundHeightCreatesTheGround)
 {
     const Scenario plain = withOverrides({});
     EXPECT_FALSE(plain.ground.has_value());
-    const Scenario scenario = withOverrides({"ground.height=1.5"});
+    // below the body, which may not start inside the ground (issue 14, item 9)
+    const Scenario scenario = withOverrides({"ground.height=-3.5"});
     ASSERT_TRUE(scenario.ground.has_value());
-    EXPECT_EQ(scenario.ground->height, 1.5);
+    EXPECT_EQ(scenario.ground->height, -3.5);
 }
 
 TEST(Overrides, BodyByName)

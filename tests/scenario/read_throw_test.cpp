@@ -26,7 +26,7 @@ std::string diceScene(const std::string& throwTable)
 
 TEST(ReadThrow, AbsentTableMeansNoThrowSpec)
 {
-    EXPECT_FALSE(parseScenario("[ground]\n[[body]]\n", "scene.toml").throwSpec.has_value());
+    EXPECT_FALSE(parseScenario("[ground]\n[[body]]\nposition = [0, 1, 0]\n", "scene.toml").throwSpec.has_value());
 }
 
 TEST(ReadThrow, EmptyTableTakesTheDefaults)

@@ -115,6 +115,28 @@ TEST(Runner, PartThreeTaskOneStopsTheBodyAndSpinsItClockwise)
     EXPECT_LT(body.angularVelocity.z, 0.0);
 }
 
+// issue 14, item 12: the step that reaches `until` is shortened to end there
+TEST(Runner, AStepEndsAtUntilWhenThatComesFirst)
+{
+    const Scenario scenario =
+        parseScenario("[world]\ndt = 0.1\ngravity = [0, -10, 0]\n[[body]]\n", "scene.toml");
+    Runner runner(scenario);
+    runner.step(0.25);
+    runner.step(0.25);
+    EXPECT_DOUBLE_EQ(runner.time(), 0.2);
+    runner.step(0.25);
+    EXPECT_EQ(runner.stepCount(), 3);
+    EXPECT_EQ(runner.time(), 0.25);
+    // free fall for 0.25 s: v = g t
+    EXPECT_NEAR(runner.world().body(runner.bodies().front()).linearVelocity.y, -2.5, 1e-12);
+    // an `until` on the step's end, up to rounding, leaves the step whole
+    Runner whole(scenario);
+    for (int i = 0; i < 3; ++i) {
+        whole.step(0.3);
+    }
+    EXPECT_EQ(whole.time(), 3 * 0.1);
+}
+
 TEST(Runner, AnImpulseBetweenTwoStepsActsAtItsOwnTime)
 {
     // A body at rest, pushed at t = 1.001 s (between steps) to 1 m/s along x: at t = 2 s it has

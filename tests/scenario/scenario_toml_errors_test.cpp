@@ -326,3 +326,42 @@ TEST(ScenarioTomlErrors, ErrorCarriesLocationAndKey)
 
 } // namespace
 } // namespace tumble::scenario
+
+namespace {
+
+using tumble::scenario::test_support::failsWith;
+
+// issue 14, item 9: a body that starts inside or below the ground is rejected at load time
+TEST(ScenarioTomlErrors, BodyInsideTheGroundIsRejectedWithItsLineAndName)
+{
+    // a 2 m cube centred 0.5 m above the ground: its lowest face is 0.5 m inside
+    EXPECT_TRUE(failsWith("[ground]\nheight = 0\n[[body]]\nname = \"rb\"\nposition = [0, 0.5, 0]\n",
+                          "scene.toml:5: body[0].position: ",
+                          "0.5 m below the ground (y = 0 m): a body must start on or above the "
+                          "ground (body \"rb\")"));
+    // raised ground from an override, reported at the body's position line
+    const std::vector<std::string> raise{"ground.height=5"};
+    EXPECT_TRUE(failsWith("[ground]\n[[body]]\nname = \"rb\"\nposition = [0, 3, 0]\n",
+                          "scene.toml:4: body[0].position: ", "(body \"rb\")", raise));
+    // no position: the default centre (the origin) puts the default cube half in the ground
+    EXPECT_TRUE(failsWith("[ground]\n[[body]]\n", "scene.toml:2: body[0].position: ",
+                          "1 m below the ground"));
+    // a tilted cube: its lowest corner decides (half diagonal of the face, sqrt(2) m)
+    EXPECT_TRUE(failsWith("[ground]\n[[body]]\nposition = [0, 1.2, 0]\n"
+                          "orientation = { axis = [0, 0, 1], degrees = 45 }\n",
+                          "scene.toml:3: body[0].position: ", "below the ground"));
+}
+
+TEST(ScenarioTomlErrors, BodyOnOrAboveTheGroundLoads)
+{
+    EXPECT_NO_THROW((void)tumble::scenario::parseScenario(
+        "[ground]\nheight = 1\n[[body]]\nposition = [0, 2, 0]\n", "scene.toml"));
+    EXPECT_NO_THROW((void)tumble::scenario::parseScenario(
+        "[ground]\n[[body]]\nposition = [0, 1.5, 0]\n"
+        "orientation = { axis = [0, 0, 1], degrees = 45 }\n",
+        "scene.toml"));
+    // no ground, nothing to be inside
+    EXPECT_NO_THROW((void)tumble::scenario::parseScenario("[[body]]\n", "scene.toml"));
+}
+
+} // namespace

@@ -189,7 +189,8 @@ TEST(ScenarioToml, WorldKeysMapOntoSettings)
 
 TEST(ScenarioToml, EmptyGroundTableIsThePlaneAtZero)
 {
-    const Scenario scenario = parseScenario("[ground]\n[[body]]\n", "scene.toml");
+    const Scenario scenario =
+        parseScenario("[ground]\n[[body]]\nposition = [0, 1, 0]\n", "scene.toml");
     ASSERT_TRUE(scenario.ground.has_value());
     EXPECT_EQ(scenario.ground->height, 0.0);
 }

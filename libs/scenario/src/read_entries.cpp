@@ -5,8 +5,10 @@
 #include "schema.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <map>
+#include <optional>
 #include <string>
 
 namespace tumble::scenario::detail {
@@ -129,6 +131,38 @@ BodySpec readBody(const TomlReader& reader, const toml::table& table, std::size_
     return spec;
 }
 
+/// A body must start on or above the ground: one inside it would be pushed out by the first
+/// contact, gaining energy from nowhere (issue 14, item 9). [[spawn]] and [throw] check their
+/// draws the same way.
+void checkAboveGround(const TomlReader& reader, const toml::table& table, const BodySpec& spec,
+                      const std::optional<Plane>& ground, const std::string& key)
+{
+    if (!ground) {
+        return;
+    }
+    const BodyDef& def = spec.def;
+    // the half height of the rotated cuboid: each body axis's vertical part times its half extent
+    const Mat3 rotation = glm::mat3_cast(def.orientation);
+    const Vec3 half = def.shape.halfExtents();
+    const Real halfHeight = std::abs(rotation[0].y) * half.x + std::abs(rotation[1].y) * half.y +
+                            std::abs(rotation[2].y) * half.z;
+    const Real lowest = def.position.y - halfHeight;
+    // rounding of a body placed exactly on the ground is not a problem
+    const Real tolerance =
+        1e-9 * (1.0 + std::abs(def.position.y) + std::abs(ground->height) + glm::length(half));
+    if (lowest >= ground->height - tolerance) {
+        return;
+    }
+    const toml::node* position = table.get("position");
+    reader.fail(position != nullptr ? *position : static_cast<const toml::node&>(table),
+                key + ".position",
+                "the lowest vertex is at y = " + formatReal(lowest) + " m, " +
+                    formatReal(ground->height - lowest) + " m below the ground (y = " +
+                    formatReal(ground->height) +
+                    " m): a body must start on or above the ground (body \"" + spec.name +
+                    "\")");
+}
+
 /// The impulse (and offset) or the target (velocity and angular_velocity) of an entry.
 void readImpulseValue(const TomlReader& reader, const toml::table& table, Real dt,
                       ImpulseSpec& spec)
@@ -239,6 +273,11 @@ void readBodies(const TomlReader& reader, const toml::table& root, Scenario& sce
     for (std::size_t i = 0; i < bodies->size(); ++i) {
         const toml::table& table = *bodies->get(i)->as_table();
         BodySpec spec = readBody(reader, table, i, scenario.dt);
+        // a [throw] die's position is drawn per throw, and read_throw checks the draws
+        if (root.get("throw") == nullptr) {
+            checkAboveGround(reader, table, spec, scenario.ground,
+                             "body[" + std::to_string(i) + "]");
+        }
         const auto [found, inserted] = indexByName.emplace(spec.name, i);
         if (!inserted) {
             const toml::node* name = table.get("name");

@@ -63,14 +63,22 @@ std::size_t Runner::bodyIndex(BodyId id) const
     return static_cast<std::size_t>(found - m_built.bodies.begin());
 }
 
-Real Runner::time() const { return static_cast<Real>(m_stepCount) * m_scenario.dt; }
+Real Runner::time() const
+{
+    return m_endedEarly ? *m_endedEarly : static_cast<Real>(m_stepCount) * m_scenario.dt;
+}
 
-StepReport Runner::step()
+StepReport Runner::step(Real until)
 {
     const Real dt = m_scenario.dt;
     const Real tolerance = kBoundaryFraction * dt;
     const Real stepStart = time();
-    const Real stepEnd = static_cast<Real>(m_stepCount + 1) * dt;
+    Real stepEnd = static_cast<Real>(m_stepCount + 1) * dt;
+    // a duration that is not a multiple of dt ends on a shortened step, as an impulse splits one
+    if (until < stepEnd - tolerance && until > stepStart) {
+        stepEnd = until;
+        m_endedEarly = until;
+    }
     StepReport report;
 
     // walk the impulses due before the end of this step, stepping up to each one in turn

@@ -7,6 +7,8 @@
 #include "tumble/world.hpp"
 
 #include <cstddef>
+#include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -58,17 +60,23 @@ public:
     /// Index in scenario().bodies of the body with this id.
     [[nodiscard]] std::size_t bodyIndex(BodyId id) const;
 
-    /// Number of fixed steps taken; time() is stepCount() * dt, not a running sum.
+    /// Number of fixed steps taken; time() is stepCount() * dt, not a running sum, or the end
+    /// time of a step that `until` shortened.
     [[nodiscard]] long long stepCount() const { return m_stepCount; }
     [[nodiscard]] Real time() const;
-    /// Advances by the scenario's dt. Throws ScenarioError when a target impulse is unreachable.
-    StepReport step();
+    /// Advances by the scenario's dt, or to `until` when that comes first (more than 1e-9 dt
+    /// before the step's end): a run whose duration is not a multiple of dt ends at the duration,
+    /// and such a shortened step must be the last. Throws ScenarioError when a target impulse is
+    /// unreachable.
+    StepReport step(Real until = std::numeric_limits<Real>::infinity());
 
 private:
     Scenario m_scenario;
     BuiltWorld m_built;
     std::size_t m_nextImpulse = 0;
     long long m_stepCount = 0;
+    /// Set when `until` shortened the last step: the time it ended at.
+    std::optional<Real> m_endedEarly;
 };
 
 } // namespace tumble::scenario
