@@ -15,6 +15,7 @@
 #include <exception>
 #include <iostream>
 #include <ostream>
+#include <string>
 #include <vector>
 
 namespace tumble::cli {
@@ -244,13 +245,25 @@ void Console::printCollision(const scenario::Runner& runner, const CollisionEven
 {
     const ContactManifold& manifold = event.manifold;
     const ContactFeature feature = manifold.feature();
-    m_out << timePrefix(event.time) << runner.bodyName(runner.bodyIndex(manifold.body))
-          << " hits the ground on " << (feature == ContactFeature::Edge ? "an " : "a ")
-          << featureName(feature) << " (" << manifold.pointCount
-          << (manifold.pointCount == 1 ? " vertex" : " vertices") << ")\n";
+    // the other side: another body (its points are pairs of features, not vertices), a plane
+    // or the ground
+    const bool betweenBodies = !manifold.other.isNull();
+    const std::string target =
+        betweenBodies         ? runner.bodyName(runner.bodyIndex(manifold.other))
+        : manifold.plane >= 0 ? "plane " + std::to_string(manifold.plane)
+                              : std::string("the ground");
+    const char* pointWord = betweenBodies ? (manifold.pointCount == 1 ? " point" : " points")
+                                          : (manifold.pointCount == 1 ? " vertex" : " vertices");
+    m_out << timePrefix(event.time) << runner.bodyName(runner.bodyIndex(manifold.body)) << " hits "
+          << target << " on " << (feature == ContactFeature::Edge ? "an " : "a ")
+          << featureName(feature) << " (" << manifold.pointCount << pointWord << ")\n";
     for (int i = 0; i < manifold.pointCount; ++i) {
         const ContactPoint& point = manifold.points[static_cast<std::size_t>(i)];
-        m_out << "  vertex " << point.vertex << ": " << formatVec3(point.position) << '\n';
+        if (point.vertex >= 0) {
+            m_out << "  vertex " << point.vertex << ": " << formatVec3(point.position) << '\n';
+        } else {
+            m_out << "  point " << i << ": " << formatVec3(point.position) << '\n';
+        }
     }
     m_out << "  average: " << formatVec3(manifold.averagePoint())
           << ", penetration = " << formatPrintf("%.3g", manifold.maxPenetration()) << " m\n";

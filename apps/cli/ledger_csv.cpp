@@ -27,7 +27,7 @@ void EnergyCsv::writeStep(const scenario::Runner& runner)
                      runner.time(), csvField(runner.bodyName(i)).c_str(), linear, rotational,
                      potential, total, ledger.removedByNormal, ledger.removedByFriction,
                      ledger.removedByCorrection, ledger.removedByIntegration, ledger.removedByRest,
-                     ledger.added, total + ledger.removed() - ledger.added - ledger.initial);
+                     ledger.added, ledger.imbalance(total));
     }
 }
 

@@ -82,6 +82,14 @@ void World::buildStepIslands(detail::StepScratch& scratch, Real dt)
             sleeper.slowTime = 0.0;
         }
     }
+    scratch.islands.clear();
+    // no pairs and no half-spaces: every body is alone with the ground (and nothing allocates)
+    if (scratch.links.empty() && m_planes.empty()) {
+        for (BodySlot& slot : m_slots) {
+            slot.coupled = false;
+        }
+        return;
+    }
     scratch.dynamicAwake.assign(m_slots.size(), 0);
     for (std::size_t index = 0; index < m_slots.size(); ++index) {
         const BodySlot& slot = m_slots[index];
@@ -89,7 +97,6 @@ void World::buildStepIslands(detail::StepScratch& scratch, Real dt)
     }
     const Islands islands = buildIslands(m_slots.size(), scratch.dynamicAwake, scratch.links);
     const IslandLinks links = linksOf(islands, scratch.links);
-    scratch.islands.clear();
     for (std::size_t k = 0; k < islands.count(); ++k) {
         const std::span<const std::uint32_t> bodies = islands.island(k);
         const std::span<const std::uint32_t> islandLinks = links.island(k);

@@ -21,9 +21,6 @@ struct SolverBody {
     /// (08-energy-ledger.md, (8.2)).
     Real normalWork = 0.0;
     Real frictionWork = 0.0;
-    /// Work received from other moving bodies beyond this body's share of what the contact
-    /// dissipated (8.4).
-    Real exchangedWork = 0.0;
 
     [[nodiscard]] Vec3 velocityAt(const Vec3& offset) const
     {

@@ -31,9 +31,7 @@ Vec3 relativeVelocity(const ContactConstraint& c, const SolverBody& a, const Sol
 }
 
 /// Applies impulse P to B and -P to A at the constraint's point, and books its work on each
-/// body, P . (u_before + u_after) / 2 per body (8.2): between two moving bodies each takes half
-/// of what the pair dissipated under the normal or the friction heading and the rest as
-/// exchanged (8.4); against static geometry the moving body takes it all.
+/// body, P . (u_before + u_after) / 2 per body (8.2), under the normal or the friction heading.
 void applyImpulse(const ContactConstraint& c, SolverBody& a, SolverBody& b, const Vec3& impulse,
                   bool isFriction)
 {
@@ -45,14 +43,6 @@ void applyImpulse(const ContactConstraint& c, SolverBody& a, SolverBody& b, cons
     b.angularVelocity += b.invInertiaWorld * glm::cross(c.offsetB, impulse);
     const Real workA = -0.5 * (beforeA + glm::dot(impulse, a.velocityAt(c.offsetA)));
     const Real workB = 0.5 * (beforeB + glm::dot(impulse, b.velocityAt(c.offsetB)));
-    if (a.invMass > 0.0 && b.invMass > 0.0) {
-        const Real dissipated = workA + workB;
-        (isFriction ? a.frictionWork : a.normalWork) += 0.5 * dissipated;
-        (isFriction ? b.frictionWork : b.normalWork) += 0.5 * dissipated;
-        a.exchangedWork += workA - 0.5 * dissipated;
-        b.exchangedWork += workB - 0.5 * dissipated;
-        return;
-    }
     (isFriction ? a.frictionWork : a.normalWork) += workA;
     (isFriction ? b.frictionWork : b.normalWork) += workB;
 }

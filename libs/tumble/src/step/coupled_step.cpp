@@ -25,6 +25,35 @@ constexpr int kMaxSubsteps = 16;
 constexpr Real kImpactConvergence = 1e-13;
 constexpr Real kRestingConvergence = 1e-10;
 
+/// (8.4): the island's total work of the normal and of the friction impulses, shared among its
+/// bodies in proportion to their kinetic energy before the stage (their mass when all are at
+/// rest); what a body received beyond its share is exchanged, and the exchanges sum to zero.
+std::vector<ContactWork> shareIslandWork(std::span<const SolverBody> bodies,
+                                         std::span<const Real> kineticBefore)
+{
+    const std::size_t count = kineticBefore.size();
+    Real normal = 0.0;
+    Real friction = 0.0;
+    Real kinetic = 0.0;
+    Real mass = 0.0;
+    for (std::size_t i = 0; i < count; ++i) {
+        normal += bodies[i].normalWork;
+        friction += bodies[i].frictionWork;
+        kinetic += kineticBefore[i];
+        mass += 1.0 / bodies[i].invMass;
+    }
+    std::vector<ContactWork> work(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        const Real share = kinetic > 0.0 ? kineticBefore[i] / kinetic
+                                         : (1.0 / bodies[i].invMass) / mass;
+        work[i].normal = share * normal;
+        work[i].friction = share * friction;
+        work[i].exchanged =
+            bodies[i].normalWork + bodies[i].frictionWork - work[i].normal - work[i].friction;
+    }
+    return work;
+}
+
 class CoupledStep {
 public:
     CoupledStep(const CoupledIsland& island, std::span<BodySlot> slots, const StepContext& context,
@@ -159,12 +188,13 @@ void CoupledStep::resolveImpacts(Real time)
         }
         solveConstraints(impact, m_bodies, m_settings.solverIterations, kImpactConvergence);
     }
+    const std::vector<ContactWork> work = shareIslandWork(m_bodies, kineticBefore);
     for (std::size_t i = 0; i < m_island.bodies.size(); ++i) {
         Body& b = body(i);
         b.linearVelocity = m_bodies[i].linearVelocity;
         b.angularVelocity = m_bodies[i].angularVelocity;
         const Real energyAfter = energyOf(b, m_settings.gravity);
-        bookContact(b, {m_bodies[i].normalWork, m_bodies[i].frictionWork, m_bodies[i].exchangedWork},
+        bookContact(b, work[i],
                     energyAfter - m_energies[i], true);
         m_energies[i] = energyAfter;
     }
@@ -227,6 +257,11 @@ Real CoupledStep::earliestArrival(Real tau) const
 void CoupledStep::finishSubstep(Real tau)
 {
     const std::size_t count = m_island.bodies.size();
+    std::vector<Real> kineticBefore(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        kineticBefore[i] = body(i).kineticEnergy();
+    }
+    const std::vector<ContactWork> work = shareIslandWork(m_bodies, kineticBefore);
     for (std::size_t i = 0; i < count; ++i) {
         Body& b = body(i);
         b.linearVelocity = m_bodies[i].linearVelocity;
@@ -234,7 +269,7 @@ void CoupledStep::finishSubstep(Real tau)
         integrateIslandBody(b, m_velocityStart[i], m_constraints, m_contacts,
                             static_cast<std::uint32_t>(i), tau, m_settings.integrator);
         const Real energyAfter = energyOf(b, m_settings.gravity);
-        bookContact(b, {m_bodies[i].normalWork, m_bodies[i].frictionWork, m_bodies[i].exchangedWork},
+        bookContact(b, work[i],
                     energyAfter - m_energies[i], false);
         m_energies[i] = energyAfter;
     }

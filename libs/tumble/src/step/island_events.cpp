@@ -38,8 +38,10 @@ void recordIslandImpacts(const CoupledIsland& island, std::span<const BodySlot> 
         if (!hit) {
             continue;
         }
-        // the event belongs to side A when it is a body that moves, else to side B
-        const bool ofA = contact.solverA < count;
+        // the event belongs to the moving side that brought more kinetic energy to the impact
+        const bool ofA = contact.solverA < count &&
+                         (contact.solverB >= count ||
+                          kineticBefore[contact.solverA] > kineticBefore[contact.solverB]);
         const Real sign = ofA ? -1.0 : 1.0;
         CollisionEvent event;
         event.time = time;

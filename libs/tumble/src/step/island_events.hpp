@@ -13,7 +13,7 @@
 namespace tumble {
 
 /// Reports the impact of each contact with a point that approached faster than `impactSpeed` and
-/// was pushed. The event's body is the contact's first dynamic side; its normal points into that
+/// was pushed. The event's body is the moving side with more kinetic energy before; its normal points into that
 /// body's side and its impulses are those acting on it. `kineticBefore` holds the island bodies'
 /// kinetic energies before the solve.
 void recordIslandImpacts(const CoupledIsland& island, std::span<const BodySlot> slots,
