@@ -164,10 +164,20 @@ void Console::printHeader(const scenario::Runner& runner, long long stepCount) c
     } else {
         m_out << "none\n";
     }
+    for (std::size_t k = 0; k < scenario.planes.size(); ++k) {
+        m_out << "plane " << k << ": point = " << formatVec3(scenario.planes[k].point)
+              << " m, normal = " << formatVec3(scenario.planes[k].normal) << '\n';
+    }
 
     // the handouts ask for the inverse inertia of each body, printed with glm::to_string
     for (std::size_t i = 0; i < runner.bodies().size(); ++i) {
         const Body& body = runner.world().body(runner.bodies()[i]);
+        if (body.isStatic()) {
+            m_out << "body " << runner.bodyName(i) << ": static, size = "
+                  << formatVec3(body.shape.size) << " m, position = " << formatVec3(body.position)
+                  << " m\n";
+            continue;
+        }
         const Vec3& inv = body.invInertiaBody;
         const Mat3 invInertiaBody(Vec3(inv.x, 0.0, 0.0), Vec3(0.0, inv.y, 0.0), Vec3(0.0, 0.0, inv.z));
         m_out << "body " << runner.bodyName(i) << ": mass = " << formatFixed(body.mass)
@@ -290,6 +300,9 @@ void Console::printSummary(const scenario::Runner& runner) const
           << " steps):\n";
     for (std::size_t i = 0; i < runner.bodies().size(); ++i) {
         const Body& body = runner.world().body(runner.bodies()[i]);
+        if (body.isStatic()) {
+            continue;
+        }
         const Real kinetic = body.kineticEnergy();
         const Real potential = body.potentialEnergy(gravity);
         m_out << "  " << runner.bodyName(i) << ": position = " << formatVec3(body.position)

@@ -21,6 +21,10 @@ void CsvWriter::writeSample(const scenario::Runner& runner)
     const Real time = runner.time();
     for (std::size_t i = 0; i < runner.bodies().size(); ++i) {
         const Body& body = runner.world().body(runner.bodies()[i]);
+        // one row per dynamic body: static geometry never moves
+        if (body.isStatic()) {
+            continue;
+        }
         const Vec3& x = body.position;
         const Quat& q = body.orientation;
         const Vec3& v = body.linearVelocity;

@@ -17,6 +17,9 @@ void EnergyCsv::writeStep(const scenario::Runner& runner)
     const World& world = runner.world();
     for (std::size_t i = 0; i < runner.bodies().size(); ++i) {
         const Body& body = world.body(runner.bodies()[i]);
+        if (body.isStatic()) {
+            continue;
+        }
         const EnergyLedger& ledger = body.ledger;
         const Real linear = 0.5 * body.mass * lengthSquared(body.linearVelocity);
         const Real rotational = 0.5 * glm::dot(body.angularVelocity, body.angularMomentum());

@@ -92,7 +92,8 @@ TEST(Overrides, SizeReplacesScaleFromTheFile)
 TEST(Overrides, SingleBodyAsBodyAndUnnamedBodyByDefaultName)
 {
     EXPECT_EQ(withOverrides({"body.mass=3"}).bodies[0].def.mass, 3.0);
-    const Scenario unnamed = withOverrides({"body2.friction=0.1"}, "[[body]]\n[[body]]\n");
+    const Scenario unnamed = withOverrides({"body2.friction=0.1"},
+                                          "[[body]]\n[[body]]\nposition = [3, 0, 0]\n");
     EXPECT_EQ(unnamed.bodies[0].def.material.friction, 0.5);
     EXPECT_EQ(unnamed.bodies[1].def.material.friction, 0.1);
 }

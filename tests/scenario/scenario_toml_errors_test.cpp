@@ -364,4 +364,45 @@ TEST(ScenarioTomlErrors, BodyOnOrAboveTheGroundLoads)
     EXPECT_NO_THROW((void)tumble::scenario::parseScenario("[[body]]\n", "scene.toml"));
 }
 
+TEST(ScenarioTomlErrors, StaticGeometryIsCheckedLikeEveryOtherKey)
+{
+    // an unknown motion, and what would move a static body
+    EXPECT_TRUE(failsWith("[[body]]\nmotion = \"fixed\"\n", "scene.toml:2: body[0].motion: ",
+                          "\"dynamic\""));
+    EXPECT_TRUE(failsWith("[[body]]\nmotion = \"static\"\nmass = 2\n",
+                          "scene.toml:3: body[0].mass: ", "a static body takes no mass"));
+    EXPECT_TRUE(failsWith("[[body]]\nmotion = \"static\"\nvelocity = [1, 0, 0]\n",
+                          "scene.toml:3: body[0].velocity: ", "a static body takes no velocity"));
+    EXPECT_TRUE(failsWith("[[body]]\nmotion = \"static\"\nangular_velocity = [1, 0, 0]\n",
+                          "scene.toml:3: body[0].angular_velocity: ", "takes no angular_velocity"));
+    // a plane needs a nonzero normal, a point, and known keys
+    EXPECT_TRUE(failsWith("[[plane]]\npoint = [0, 0, 0]\nnormal = [0, 0, 0]\n[[body]]\n",
+                          "scene.toml:3: plane[0].normal: ", "must be a nonzero vector"));
+    EXPECT_TRUE(failsWith("[[plane]]\nnormal = [0, 1, 0]\n[[body]]\n",
+                          "scene.toml:1: plane[0].point: ", "missing"));
+    EXPECT_TRUE(failsWith("[[plane]]\npoint = [0, 0, 0]\nnormal = [0, 1, 0]\nfrction = 1\n"
+                          "[[body]]\n",
+                          "scene.toml:4: plane[0].frction: ", ""));
+}
+
+TEST(ScenarioTomlErrors, ADynamicBodyMayNotStartInsideAnotherOrInsideAPlane)
+{
+    // two unit cubes 0.5 m apart centre to centre overlap by 0.5 m
+    EXPECT_TRUE(failsWith("[[body]]\nname = \"a\"\nsize = [1, 1, 1]\n[[body]]\nname = \"b\"\n"
+                          "size = [1, 1, 1]\nposition = [0.5, 0, 0]\n",
+                          "scene.toml:7: body[1].position: ", "overlaps body \"a\" by 0.5 m"));
+    // touching is allowed, and static bodies may overlap each other
+    EXPECT_NO_THROW((void)tumble::scenario::parseScenario(
+        "[[body]]\nsize = [1, 1, 1]\n[[body]]\nsize = [1, 1, 1]\nposition = [1, 0, 0]\n",
+        "scene.toml"));
+    EXPECT_NO_THROW((void)tumble::scenario::parseScenario(
+        "[[body]]\nmotion = \"static\"\n[[body]]\nmotion = \"static\"\nposition = [1, 0, 0]\n"
+        "[[body]]\nposition = [0, 5, 0]\n",
+        "scene.toml"));
+    // a cube whose centre is 0.25 m from a plane of normal +x sinks 0.75 m into it
+    EXPECT_TRUE(failsWith("[[plane]]\npoint = [0, 0, 0]\nnormal = [2, 0, 0]\n[[body]]\n"
+                          "position = [0.25, 0, 0]\n",
+                          "scene.toml:5: body[0].position: ", "0.75 m inside plane[0]"));
+}
+
 } // namespace

@@ -252,12 +252,14 @@ TEST(ScenarioToml, NearlyUnitQuaternionIsNormalised)
 TEST(ScenarioToml, UnnamedBodiesAreNumberedFromOne)
 {
     const Scenario scenario =
-        parseScenario("[[body]]\n[[body]]\nname = \"rb\"\n[[body]]\n", "scene.toml");
+        parseScenario("[[body]]\n[[body]]\nname = \"rb\"\nposition = [3, 0, 0]\n[[body]]\n"
+                      "position = [6, 0, 0]\n",
+                      "scene.toml");
     ASSERT_EQ(scenario.bodies.size(), 3u);
     EXPECT_EQ(scenario.bodies[0].name, "body1");
     EXPECT_EQ(scenario.bodies[1].name, "rb");
     EXPECT_EQ(scenario.bodies[2].name, "body3");
-    EXPECT_EQ(scenario.bodies[2].where.line, 4);
+    EXPECT_EQ(scenario.bodies[2].where.line, 5);
 }
 
 TEST(ScenarioToml, ImpulsesAreSortedByTimeKeepingFileOrderForTies)

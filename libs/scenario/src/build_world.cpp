@@ -15,6 +15,10 @@ void checkBody(const BodySpec& spec)
     const auto fail = [&](const char* key, const char* problem) {
         throw ScenarioError(spec.where, spec.name + "." + key, problem);
     };
+    if (def.motion == BodyMotion::Static &&
+        (lengthSquared(def.linearVelocity) > 0.0 || lengthSquared(def.angularVelocity) > 0.0)) {
+        fail("velocity", "a static body does not move");
+    }
     if (!(def.mass > 0.0) || !std::isfinite(def.mass)) {
         fail("mass", "must be positive and finite");
     }
@@ -37,6 +41,15 @@ BuiltWorld buildWorld(const Scenario& scenario)
 {
     BuiltWorld built{World(scenario.settings), {}};
     built.world.setGround(scenario.ground);
+    built.world.setGroundMaterial(scenario.groundMaterial);
+    for (const StaticPlane& plane : scenario.planes) {
+        if (!isFinite(plane.point) || !isFinite(plane.normal) ||
+            std::abs(glm::length(plane.normal) - 1.0) > 1e-9) {
+            throw ScenarioError(SourceLocation{scenario.sourceName, 0}, "plane",
+                                "needs a finite point and a unit normal");
+        }
+        built.world.addPlane(plane);
+    }
     built.bodies.reserve(scenario.bodies.size());
     for (const BodySpec& spec : scenario.bodies) {
         checkBody(spec);

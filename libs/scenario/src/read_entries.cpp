@@ -104,6 +104,21 @@ BodySpec readBody(const TomlReader& reader, const toml::table& table, std::size_
     // Added to range problems so that the message names the body, not only its index.
     const std::string context = " (body \"" + spec.name + "\")";
     BodyDef& def = spec.def;
+    ifPresent(table, "motion", [&](const toml::node& node) {
+        def.motion = static_cast<BodyMotion>(reader.choice(node, key + ".motion", kMotionNames));
+    });
+    if (def.motion == BodyMotion::Static) {
+        // a static body is fixed geometry: what would move it is a mistake, not a default
+        for (const std::string_view dynamicKey : kDynamicOnlyBodyKeys) {
+            ifPresent(table, dynamicKey, [&](const toml::node& node) {
+                reader.fail(node, key + "." + std::string(dynamicKey),
+                            "a static body takes no " + std::string(dynamicKey) +
+                                " (it does not move)" + context);
+            });
+        }
+        def.materialGiven = std::any_of(kMaterialKeys.begin(), kMaterialKeys.end(),
+                                        [&](std::string_view k) { return table.contains(k); });
+    }
     readShape(reader, table, key, context, def);
     ifPresent(table, "mass", [&](const toml::node& node) {
         def.mass = reader.positive(node, key + ".mass", context);
@@ -273,10 +288,12 @@ void readBodies(const TomlReader& reader, const toml::table& root, Scenario& sce
     for (std::size_t i = 0; i < bodies->size(); ++i) {
         const toml::table& table = *bodies->get(i)->as_table();
         BodySpec spec = readBody(reader, table, i, scenario.dt);
-        // a [throw] die's position is drawn per throw, and read_throw checks the draws
-        if (root.get("throw") == nullptr) {
-            checkAboveGround(reader, table, spec, scenario.ground,
-                             "body[" + std::to_string(i) + "]");
+        // a [throw] die's position is drawn per throw, and read_throw checks the draws; static
+        // bodies may overlap the ground and each other
+        if (root.get("throw") == nullptr && spec.def.motion == BodyMotion::Dynamic) {
+            const std::string key = "body[" + std::to_string(i) + "]";
+            checkAboveGround(reader, table, spec, scenario.ground, key);
+            checkClearOfStaticPlanes(reader, table, spec, scenario, key);
         }
         const auto [found, inserted] = indexByName.emplace(spec.name, i);
         if (!inserted) {
@@ -285,6 +302,9 @@ void readBodies(const TomlReader& reader, const toml::table& root, Scenario& sce
                         "body[" + std::to_string(i) + "].name",
                         "duplicate body name \"" + spec.name + "\" (also body[" +
                             std::to_string(found->second) + "])");
+        }
+        if (root.get("throw") == nullptr) {
+            checkClearOfBodies(reader, table, spec, scenario, "body[" + std::to_string(i) + "]");
         }
         scenario.bodies.push_back(std::move(spec));
     }

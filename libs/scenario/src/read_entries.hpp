@@ -7,6 +7,9 @@
 
 #include <toml++/toml.h>
 
+#include <optional>
+#include <string>
+
 namespace tumble::scenario::detail {
 
 /// The array of tables `name` ([[body]], [[impulse]], [[spawn]]), or null when absent.
@@ -28,6 +31,24 @@ void readMaterial(const TomlReader& reader, const toml::table& table, const std:
 
 /// Appends one BodySpec per [[body]] (names must be unique).
 void readBodies(const TomlReader& reader, const toml::table& root, Scenario& scenario);
+
+/// Fails when a dynamic body starts deeper than the contact tolerance inside a [[plane]].
+void checkClearOfStaticPlanes(const TomlReader& reader, const toml::table& table,
+                              const BodySpec& spec, const Scenario& scenario,
+                              const std::string& key);
+
+/// Fails when the body overlaps a body read before it by more than the contact tolerance, unless
+/// both are static.
+void checkClearOfBodies(const TomlReader& reader, const toml::table& table, const BodySpec& spec,
+                        const Scenario& scenario, const std::string& key);
+
+/// Appends one StaticPlane per [[plane]] (point and normal required, normal nonzero, normalised;
+/// a material when the entry gives one).
+void readPlanes(const TomlReader& reader, const toml::table& root, Scenario& scenario);
+
+/// The material keys of `table`, or none when it gives none.
+std::optional<Material> readOptionalMaterial(const TomlReader& reader, const toml::table& table,
+                                             const std::string& key);
 
 /// Appends one ImpulseSpec per [[impulse]] (each naming a body already read) and sorts them by
 /// `at`, keeping file order for equal times.

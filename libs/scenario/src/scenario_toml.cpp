@@ -108,8 +108,11 @@ Scenario readScenario(const TomlReader& reader, const toml::table& root)
         readWorld(reader, reader.table(node, "world", "a table ([world])"), scenario);
     });
     ifPresent(root, "ground", [&](const toml::node& node) {
-        scenario.ground = readGround(reader, reader.table(node, "ground", "a table ([ground])"));
+        const toml::table& ground = reader.table(node, "ground", "a table ([ground])");
+        scenario.ground = readGround(reader, ground);
+        scenario.groundMaterial = detail::readOptionalMaterial(reader, ground, "ground");
     });
+    detail::readPlanes(reader, root, scenario);
     detail::readBodies(reader, root, scenario);
     detail::readSpawns(reader, root, scenario);
     if (scenario.bodies.empty()) {

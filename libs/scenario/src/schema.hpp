@@ -6,19 +6,34 @@
 
 namespace tumble::scenario::detail {
 
-inline constexpr std::array<std::string_view, 6> kTopLevelKeys{
-    "world", "ground", "body", "impulse", "spawn", "throw"};
+inline constexpr std::array<std::string_view, 7> kTopLevelKeys{
+    "world", "ground", "plane", "body", "impulse", "spawn", "throw"};
 
 inline constexpr std::array<std::string_view, 12> kWorldKeys{
     "gravity", "dt", "duration", "integrator", "response", "contact_tolerance",
     "restitution_threshold", "solver_iterations", "sleep", "sleep_linear_speed",
     "sleep_angular_speed", "sleep_time"};
 
-inline constexpr std::array<std::string_view, 1> kGroundKeys{"height"};
+inline constexpr std::array<std::string_view, 4> kGroundKeys{"height", "elasticity", "friction",
+                                                            "static_friction"};
 
-inline constexpr std::array<std::string_view, 11> kBodyKeys{
-    "name", "size", "scale", "mass", "position", "orientation", "velocity", "angular_velocity",
-    "elasticity", "friction", "static_friction"};
+inline constexpr std::array<std::string_view, 5> kPlaneKeys{"point", "normal", "elasticity",
+                                                           "friction", "static_friction"};
+
+/// The keys of a material; a static body or a plane that gives none takes the dynamic body's.
+inline constexpr std::array<std::string_view, 3> kMaterialKeys{"elasticity", "friction",
+                                                              "static_friction"};
+
+inline constexpr std::array<std::string_view, 12> kBodyKeys{
+    "name", "motion", "size", "scale", "mass", "position", "orientation", "velocity",
+    "angular_velocity", "elasticity", "friction", "static_friction"};
+
+/// What a static body may not have: it does not move, and no contact moves it.
+inline constexpr std::array<std::string_view, 3> kDynamicOnlyBodyKeys{"mass", "velocity",
+                                                                      "angular_velocity"};
+
+/// Values of body.motion, in the order of BodyMotion's enumerators.
+inline constexpr std::array<std::string_view, 2> kMotionNames{"dynamic", "static"};
 
 inline constexpr std::array<std::string_view, 6> kImpulseKeys{
     "at", "body", "impulse", "offset", "velocity", "angular_velocity"};

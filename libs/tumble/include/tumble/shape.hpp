@@ -57,4 +57,12 @@ const char* faceName(CuboidFace face);
 /// given orientation (the face down is faceAlong(orientation, -up)).
 CuboidFace faceAlong(const Quat& orientation, const Vec3& worldDirection);
 
+/// How deep two cuboids at their poses overlap, m: the penetration along the separating axis of
+/// least penetration (docs/physics/09-box-box.md, (9.4)); zero or negative when they are apart.
+Real cuboidOverlapDepth(const Transform& poseA, const Vec3& halfExtentsA, const Transform& poseB,
+                        const Vec3& halfExtentsB);
+
+/// How deep the cuboid's lowest vertex lies inside the half-space, m (negative: above its plane).
+Real cuboidHalfSpaceDepth(const Transform& pose, const Vec3& halfExtents, const StaticPlane& plane);
+
 } // namespace tumble

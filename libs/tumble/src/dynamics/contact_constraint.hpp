@@ -60,6 +60,8 @@ struct ContactConstraint {
     Real normalImpulse = 0.0;
     Real tangentImpulse1 = 0.0;
     Real tangentImpulse2 = 0.0;
+    /// Where the friction step's Newton iteration (6.4) starts: last sweep's shift.
+    Real frictionShift = 0.0;
     RestitutionState restitutionState = RestitutionState::None;
 };
 

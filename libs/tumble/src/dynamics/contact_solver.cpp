@@ -2,6 +2,7 @@
 #include "dynamics/contact_solver.hpp"
 
 #include "body_state.hpp"
+#include "dynamics/friction_cone.hpp"
 #include "dynamics/normal_impulses.hpp"
 #include "tumble_assert.hpp"
 
@@ -136,67 +137,15 @@ void preparePoint(SolverPoint& point, const Body& body, const SolverFrame& frame
                          : body.material.friction;
 }
 
-/// The friction impulse of one point with the others held fixed (6.4): the impulse in the disc
-/// |lambda| <= mu lambda_n that minimises the kinetic energy, lambda^T K lambda / 2 +
-/// lambda^T v_free, where v_free is the tangential velocity without this point's friction. Inside
-/// the disc it stops the sliding; on its edge it is -(K + s 1)^-1 v_free with s >= 0 such that
-/// |lambda| = mu lambda_n, which makes the remaining sliding velocity exactly opposite to it
-/// (maximal dissipation). s is found by Newton's method on 1/|lambda(s)| - 1/bound, which is
-/// concave and increasing, so the iteration converges from s = 0 without overshooting.
+/// The friction impulse of one point with the others held fixed (6.4), friction_cone.hpp.
 void solveFriction(SolverPoint& point, Real v1, Real v2, Real& impulse1, Real& impulse2)
 {
-    const std::array<Real, 4>& k = point.tangentK;
-    const Real free1 = v1 - (k[0] * point.tangentImpulse1 + k[1] * point.tangentImpulse2);
-    const Real free2 = v2 - (k[2] * point.tangentImpulse1 + k[3] * point.tangentImpulse2);
-    impulse1 = -(point.tangentMass[0] * free1 + point.tangentMass[1] * free2);
-    impulse2 = -(point.tangentMass[2] * free1 + point.tangentMass[3] * free2);
-    const Real bound = point.friction * point.normalImpulse;
-    const Real freeMagnitude = planarLength(impulse1, impulse2);
-    if (freeMagnitude <= bound) {
-        return;
-    }
-    // A bound negligible next to the free impulse (zero, or a subnormal friction coefficient) is
-    // no friction: Newton's method below would overflow 1/bound and turn it into NaN.
-    if (bound <= 1e-15 * freeMagnitude) {
-        impulse1 = 0.0;
-        impulse2 = 0.0;
-        return;
-    }
-    // Newton's method converges from any start s >= 0: from the left of the root monotonically,
-    // and from the right the tangent of the concave function lies above it, so the first step
-    // lands left of the root. With D = det(K + s 1) and m = adj(K + s 1) v_free the impulse is
-    // -m / D, so |lambda| = |m| / D and lambda^T (K + s 1)^-1 lambda = m^T adj(K + s 1) m / D^3:
-    // the iteration runs on m and D, one division a step, and divides by D only at the end.
-    Real shift = point.frictionShift;
-    Real scaled1 = 0.0;
-    Real scaled2 = 0.0;
-    Real scaledMagnitude = 0.0;
-    const Real inverseBound = 1.0 / bound;
-    for (int iteration = 0; iteration < 50; ++iteration) {
-        const Real a = k[0] + shift;
-        const Real d = k[3] + shift;
-        const Real determinant = a * d - k[1] * k[1];
-        scaled1 = d * free1 - k[1] * free2;
-        scaled2 = a * free2 - k[1] * free1;
-        scaledMagnitude = planarLength(scaled1, scaled2);
-        const Real boundTimesDeterminant = bound * determinant;
-        if (std::abs(scaledMagnitude - boundTimesDeterminant) <= 1e-15 * boundTimesDeterminant) {
-            break;
-        }
-        // d|lambda|/ds = -lambda^T (K + s 1)^-1 lambda / |lambda|, so with phi = 1/|lambda| -
-        // 1/bound the step phi / phi' is |lambda|^2 (1 - |lambda| / bound) / quadratic, which in
-        // m and D is |m|^2 (D - |m| / bound) / m^T adj(K + s 1) m.
-        const Real quadratic =
-            d * scaled1 * scaled1 - 2.0 * k[1] * scaled1 * scaled2 + a * scaled2 * scaled2;
-        shift = std::max(0.0, shift - scaledMagnitude * scaledMagnitude *
-                                          (determinant - scaledMagnitude * inverseBound) /
-                                          quadratic);
-    }
-    point.frictionShift = shift;
-    // Rounding aside -m / D is on the circle; put the impulse there exactly.
-    const Real scale = -bound / scaledMagnitude;
-    impulse1 = scale * scaled1;
-    impulse2 = scale * scaled2;
+    const FrictionImpulse result =
+        frictionOnCone(point.tangentK, point.tangentMass, point.tangentImpulse1,
+                       point.tangentImpulse2, point.friction * point.normalImpulse, v1, v2,
+                       point.frictionShift);
+    impulse1 = result.impulse1;
+    impulse2 = result.impulse2;
 }
 
 /// (5.11): replaces the normal impulses by the exact solution of the normal problem with the

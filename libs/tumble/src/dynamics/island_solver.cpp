@@ -1,6 +1,8 @@
 // Two-body sequential impulses with accumulated clamping and a friction disc (Catto 2005, 2014).
 #include "dynamics/island_solver.hpp"
 
+#include "dynamics/friction_cone.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -112,19 +114,15 @@ int solveConstraints(std::span<ContactConstraint> constraints, std::span<SolverB
             const Real normalChange = normalImpulse - c.normalImpulse;
             c.normalImpulse = normalImpulse;
             applyImpulse(c, a, b, normalChange * c.normal, false);
-            // (11.5): the tangential impulse that stops the sliding, clamped to the disc
+            // (11.5): the friction step of maximal dissipation on the cone (6.4)
             const Vec3 velocity = relativeVelocity(c, a, b);
-            const Real v1 = glm::dot(c.tangent1, velocity);
-            const Real v2 = glm::dot(c.tangent2, velocity);
-            Real impulse1 = c.tangentImpulse1 - (c.tangentMass[0] * v1 + c.tangentMass[1] * v2);
-            Real impulse2 = c.tangentImpulse2 - (c.tangentMass[2] * v1 + c.tangentMass[3] * v2);
-            const Real bound = c.friction * c.normalImpulse;
+            const FrictionImpulse friction = frictionOnCone(
+                c.tangentK, c.tangentMass, c.tangentImpulse1, c.tangentImpulse2,
+                c.friction * c.normalImpulse, glm::dot(c.tangent1, velocity),
+                glm::dot(c.tangent2, velocity), c.frictionShift);
+            const Real impulse1 = friction.impulse1;
+            const Real impulse2 = friction.impulse2;
             const Real magnitude = std::sqrt(impulse1 * impulse1 + impulse2 * impulse2);
-            if (magnitude > bound) {
-                const Real scale = magnitude > 0.0 ? bound / magnitude : 0.0;
-                impulse1 *= scale;
-                impulse2 *= scale;
-            }
             const Real change1 = impulse1 - c.tangentImpulse1;
             const Real change2 = impulse2 - c.tangentImpulse2;
             c.tangentImpulse1 = impulse1;

@@ -104,6 +104,11 @@ struct Scenario {
     Real duration = 10.0;
     /// The ground plane; none when the file has no [ground] table.
     std::optional<Plane> ground;
+    /// The ground's own material ([ground] elasticity, friction, static_friction); none when it
+    /// gives none, and its contacts take the dynamic body's.
+    std::optional<Material> groundMaterial;
+    /// The [[plane]] half-spaces, in file order.
+    std::vector<StaticPlane> planes;
     /// The [[body]] entries, then the bodies of each [[spawn]] (named spawn<s>_<k>, 1-based).
     std::vector<BodySpec> bodies;
     std::vector<SpawnSpec> spawns;
@@ -122,7 +127,7 @@ Scenario loadScenario(const std::filesystem::path& path, std::span<const std::st
 Scenario parseScenario(std::string_view text, std::string_view sourceName,
                        std::span<const std::string> overrides = {});
 
-/// A World holding the scenario's ground and bodies, and the ids in BodySpec order.
+/// A World holding the scenario's ground, planes and bodies, and the ids in BodySpec order.
 struct BuiltWorld {
     World world;
     std::vector<BodyId> bodies;

@@ -1,0 +1,28 @@
+// The maximal-dissipation friction impulse of one contact point on its Coulomb cone
+// (docs/physics/06-friction.md, (6.4)).
+#pragma once
+
+#include "tumble/math.hpp"
+
+#include <array>
+
+namespace tumble {
+
+struct FrictionImpulse {
+    Real impulse1 = 0.0;
+    Real impulse2 = 0.0;
+};
+
+/// The friction impulse of one point with the others held fixed (6.4): the impulse in the disc
+/// |lambda| <= bound that minimises the kinetic energy, lambda^T K lambda / 2 + lambda^T v_free,
+/// where v_free is the tangential velocity (v1, v2) without this point's current friction
+/// (current1, current2). Inside the disc it stops the sliding; on its edge it is
+/// -(K + s 1)^-1 v_free with s >= 0 such that |lambda| = bound, which leaves the remaining
+/// sliding exactly opposite to it (maximal dissipation). `tangentK` and `tangentMass` are K_t
+/// and its inverse (6.3), row-major; `shift` is where Newton's method on s starts, and is left
+/// at the solution for the next call.
+FrictionImpulse frictionOnCone(const std::array<Real, 4>& tangentK,
+                               const std::array<Real, 4>& tangentMass, Real current1,
+                               Real current2, Real bound, Real v1, Real v2, Real& shift);
+
+} // namespace tumble
