@@ -187,6 +187,9 @@ TEST(SpawnErrors, BadValuesNameTheLineAndKey)
                           "scene.toml:6: spawn[0].color: ", "unknown key"));
     EXPECT_TRUE(failsWith(spawnScene("count = 1000000\nheight = [4, 5]\nspacing = 5000\n"),
                           "scene.toml:3: spawn[0].spacing: ", "farthest"));
+    // the default 2 m cube's diagonal is 3.46 m: closer neighbours could start inside each other
+    EXPECT_TRUE(failsWith(spawnScene("count = 3\nheight = [4, 5]\nspacing = 3\n"),
+                          "scene.toml:6: spawn[0].spacing: ", "at least the body's diagonal"));
 }
 
 TEST(SpawnErrors, ASceneNeedsABodyOrASpawn)

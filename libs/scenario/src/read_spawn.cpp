@@ -73,6 +73,15 @@ SpawnSpec readSpawn(const TomlReader& reader, const toml::table& table, std::siz
     spawn.spacing = 2.0 * boundingRadius(body.shape);
     ifPresent(table, "spacing", [&](const toml::node& node) {
         spawn.spacing = reader.positive(node, key + ".spacing", context);
+        // bodies touch each other, so grid neighbours closer than the diagonal could start
+        // inside each other, whatever orientations are drawn
+        if (spawn.count > 1 && spawn.spacing < 2.0 * boundingRadius(body.shape)) {
+            reader.fail(node, key + ".spacing",
+                        "must be at least the body's diagonal " +
+                            formatReal(2.0 * boundingRadius(body.shape)) +
+                            " m, got " + formatReal(spawn.spacing) +
+                            ": neighbours could start inside each other" + context);
+        }
     });
     const toml::node* height = table.get("height");
     if (height == nullptr) {

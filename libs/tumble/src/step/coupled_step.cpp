@@ -23,7 +23,7 @@ constexpr Real kImpactSpeed = 1e-3;
 constexpr int kMaxSubsteps = 16;
 /// Convergence of the sweeps (5.10): impacts to rounding, resting contact as for a body alone.
 constexpr Real kImpactConvergence = 1e-13;
-constexpr Real kRestingConvergence = 1e-10;
+constexpr Real kRestingConvergence = 1e-8;
 
 /// (8.4): the island's total work of the normal and of the friction impulses, shared among its
 /// bodies in proportion to their kinetic energy before the stage (their mass when all are at
@@ -220,7 +220,7 @@ void CoupledStep::solveSubstep(Real tau)
     for (ContactConstraint& c : m_constraints) {
         prepareConstraint(c, m_bodies, targets);
     }
-    loadWarmStart(m_island, m_slots, m_contacts, m_constraints, tau);
+    loadWarmStart(m_island, m_slots, m_contacts, m_constraints, tau, m_settings);
     warmStart(m_constraints, m_bodies);
     solveConstraints(m_constraints, m_bodies, m_settings.solverIterations, kRestingConvergence);
 }

@@ -4,6 +4,7 @@
 #include "body_state.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/island_solver.hpp"
+#include "step/resting_load_guess.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -21,8 +22,12 @@ constexpr Real kPushOutConvergence = 1e-6;
 
 void loadWarmStart(const CoupledIsland& island, std::span<const BodySlot> slots,
                    std::span<const IslandContact> contacts,
-                   std::span<ContactConstraint> constraints, Real tau)
+                   std::span<ContactConstraint> constraints, Real tau,
+                   const WorldSettings& settings)
 {
+    // points in contact with nothing to start from get the carried weight (11.13)
+    std::vector<std::uint8_t> guess(constraints.size(), 0);
+    bool anyGuess = false;
     for (const IslandContact& contact : contacts) {
         const std::vector<CachedContactPoint>& cache = slots[island.bodies[contact.owner]].contactCache;
         for (int k = 0; k < contact.manifold.pointCount; ++k) {
@@ -35,6 +40,9 @@ void loadWarmStart(const CoupledIsland& island, std::span<const BodySlot> slots,
                 return entry.other == contact.ownerKey && entry.id == id;
             });
             if (found == cache.end()) {
+                const bool touching = c.separation <= settings.contactTolerance;
+                guess[contact.firstConstraint + static_cast<std::uint32_t>(k)] = touching;
+                anyGuess = anyGuess || touching;
                 continue;
             }
             c.normalImpulse = found->normalRate * tau;
@@ -50,6 +58,9 @@ void loadWarmStart(const CoupledIsland& island, std::span<const BodySlot> slots,
                 c.tangentImpulse2 *= scale;
             }
         }
+    }
+    if (anyGuess) {
+        guessRestingImpulses(island, slots, contacts, constraints, guess, settings.gravity, tau);
     }
 }
 
