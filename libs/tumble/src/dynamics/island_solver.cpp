@@ -89,6 +89,18 @@ void prepareConstraint(ContactConstraint& c, std::span<const SolverBody> bodies,
     }
 }
 
+void applyRestitution(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies)
+{
+    for (ContactConstraint& c : constraints) {
+        if (c.restitutionState != RestitutionState::Applied) {
+            continue;
+        }
+        const Real extra = c.restitution * c.normalImpulse;
+        c.normalImpulse += extra;
+        applyImpulse(c, bodies[c.bodyA], bodies[c.bodyB], extra * c.normal, false);
+    }
+}
+
 void warmStart(std::span<const ContactConstraint> constraints, std::span<SolverBody> bodies)
 {
     for (const ContactConstraint& c : constraints) {

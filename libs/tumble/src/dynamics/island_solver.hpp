@@ -33,6 +33,10 @@ struct ConstraintTargetSettings {
 void prepareConstraint(ContactConstraint& constraint, std::span<const SolverBody> bodies,
                        const ConstraintTargetSettings& settings);
 
+/// (11.4a) Poisson's restitution after a compression solve: each point whose approach was fast
+/// enough gets e times its compression impulse more, along the normal.
+void applyRestitution(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies);
+
 /// Applies the constraints' impulses to their bodies (warm starting, (11.6)).
 void warmStart(std::span<const ContactConstraint> constraints, std::span<SolverBody> bodies);
 

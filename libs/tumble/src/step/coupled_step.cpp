@@ -21,6 +21,8 @@ constexpr Real kImpactSpeed = 1e-3;
 /// Sub-steps in one step; the last one takes the rest of the step whatever arrives in it, and
 /// the speculative targets (11.4) still keep its points from crossing.
 constexpr int kMaxSubsteps = 16;
+/// Re-solves of one sub-step cut at an arrival (11.8).
+constexpr int kMaxArrivalCuts = 4;
 /// Convergence of the sweeps (5.10): impacts to rounding, resting contact as for a body alone.
 constexpr Real kImpactConvergence = 1e-13;
 constexpr Real kRestingConvergence = 1e-8;
@@ -68,6 +70,7 @@ public:
 private:
     void gatherBodies();
     void resolveImpacts(Real time);
+    [[nodiscard]] std::vector<ContactConstraint> impactConstraints() const;
     void solveSubstep(Real tau);
     [[nodiscard]] Real earliestArrival(Real tau) const;
     void finishSubstep(Real tau);
@@ -115,12 +118,15 @@ void CoupledStep::run(Real dt)
         // velocities over the rest of the step, shortened to the next impact (11.8)
         Real tau = remaining;
         solveSubstep(tau);
-        if (substep + 1 < kMaxSubsteps) {
+        // the re-solved motion is only linear in time to first order (rotation), so a point can
+        // still arrive inside the shortened sub-step: cut again, a few times at most
+        for (int cut = 0; cut < kMaxArrivalCuts && substep + 1 < kMaxSubsteps; ++cut) {
             const Real arrival = earliestArrival(tau);
-            if (arrival < tau) {
-                tau = arrival;
-                solveSubstep(tau);
+            if (!(arrival < tau)) {
+                break;
             }
+            tau = arrival;
+            solveSubstep(tau);
         }
         // positions, push-out, warm start (11.9), (11.10)
         finishSubstep(tau);
@@ -147,46 +153,28 @@ void CoupledStep::resolveImpacts(Real time)
     if (!approaching) {
         return;
     }
-    // the points in contact only: those still apart are met at their own time
-    std::vector<ContactConstraint> impact;
-    impact.reserve(m_constraints.size());
-    for (const ContactConstraint& c : m_constraints) {
-        if (c.separation <= touching) {
-            impact.push_back(c);
-            prepareConstraint(impact.back(), m_bodies,
-                              {ConstraintTarget::Impact, 0.0, touching,
-                               m_settings.restitutionThreshold});
-        }
-    }
+    std::vector<ContactConstraint> impact = impactConstraints();
     std::vector<Real> kineticBefore(m_island.bodies.size());
     for (std::size_t i = 0; i < m_island.bodies.size(); ++i) {
         kineticBefore[i] = body(i).kineticEnergy();
     }
+    // (11.4a) Poisson's restitution: compression until no point approaches, each point's
+    // restitution share e lambda_c of its compression impulse, and a plastic pass over any point
+    // that share left approaching
     solveConstraints(impact, m_bodies, m_settings.solverIterations, kImpactConvergence);
-    // (5.6) for an island: restitution targets met point by point can add kinetic energy when
-    // several points push at once; such an impact is solved again as a plastic one, which
-    // cannot (its impulses minimise the kinetic energy over the admissible ones)
-    Real kineticAfter = 0.0;
-    Real kineticTotal = 0.0;
-    for (std::size_t i = 0; i < m_island.bodies.size(); ++i) {
-        const Body& b = body(i);
-        kineticTotal += kineticBefore[i];
-        kineticAfter += 0.5 * b.mass * lengthSquared(m_bodies[i].linearVelocity) +
-                        0.5 * glm::dot(m_bodies[i].angularVelocity,
-                                       b.inertiaWorld() * m_bodies[i].angularVelocity);
+    applyRestitution(impact, m_bodies);
+    std::vector<ContactConstraint> correction = impact;
+    for (ContactConstraint& c : correction) {
+        c.normalImpulse = 0.0;
+        c.tangentImpulse1 = 0.0;
+        c.tangentImpulse2 = 0.0;
+        c.frictionShift = 0.0;
     }
-    if (kineticAfter > kineticTotal * (1.0 + 1e-12)) {
-        gatherBodies();
-        for (ContactConstraint& c : impact) {
-            c.normalImpulse = 0.0;
-            c.tangentImpulse1 = 0.0;
-            c.tangentImpulse2 = 0.0;
-            c.targetNormalVelocity = 0.0;
-            if (c.restitutionState == RestitutionState::Applied) {
-                c.restitutionState = RestitutionState::Suppressed;
-            }
-        }
-        solveConstraints(impact, m_bodies, m_settings.solverIterations, kImpactConvergence);
+    solveConstraints(correction, m_bodies, m_settings.solverIterations, kImpactConvergence);
+    for (std::size_t k = 0; k < impact.size(); ++k) {
+        impact[k].normalImpulse += correction[k].normalImpulse;
+        impact[k].tangentImpulse1 += correction[k].tangentImpulse1;
+        impact[k].tangentImpulse2 += correction[k].tangentImpulse2;
     }
     const std::vector<ContactWork> work = shareIslandWork(m_bodies, kineticBefore);
     for (std::size_t i = 0; i < m_island.bodies.size(); ++i) {
@@ -200,6 +188,25 @@ void CoupledStep::resolveImpacts(Real time)
     }
     recordIslandImpacts(m_island, m_slots, m_contacts, impact, kineticBefore, kImpactSpeed, time,
                         m_events);
+}
+
+std::vector<ContactConstraint> CoupledStep::impactConstraints() const
+{
+    // the points in contact only: those still apart are met at their own time; every target is
+    // no approach, and the restitution follows the compression (11.4a)
+    const Real touching = m_settings.contactTolerance;
+    std::vector<ContactConstraint> impact;
+    impact.reserve(m_constraints.size());
+    for (const ContactConstraint& c : m_constraints) {
+        if (c.separation <= touching) {
+            ContactConstraint& prepared = impact.emplace_back(c);
+            prepareConstraint(prepared, m_bodies,
+                              {ConstraintTarget::Impact, 0.0, touching,
+                               m_settings.restitutionThreshold});
+            prepared.targetNormalVelocity = 0.0;
+        }
+    }
+    return impact;
 }
 
 void CoupledStep::solveSubstep(Real tau)
