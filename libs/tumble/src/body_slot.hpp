@@ -10,14 +10,16 @@
 
 namespace tumble {
 
-/// Last step's impulses at one point of a contact of the island solver, per second, kept by the
-/// contact's owner (the lower dynamic body of two, or the dynamic one) for warm starting (11.6).
+/// Last sub-step's impulses at one point of a contact of the island solver and the sub-step's
+/// length, kept by the contact's owner (the lower dynamic body of two, or the dynamic one) for
+/// warm starting (11.6).
 struct CachedContactPoint {
     /// The other side: a body's slot index, or kPlaneSide + plane index, or kGroundSide.
     std::uint32_t other = 0;
     std::uint32_t id = 0;
-    Real normalRate = 0.0;
-    Vec3 frictionRate{0.0};
+    Real normalImpulse = 0.0;
+    Vec3 frictionImpulse{0.0};
+    Real tau = 0.0;
 };
 
 /// Side keys of the static half-spaces in CachedContactPoint::other.

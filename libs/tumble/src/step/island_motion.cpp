@@ -45,8 +45,11 @@ void loadWarmStart(const CoupledIsland& island, std::span<const BodySlot> slots,
                 anyGuess = anyGuess || touching;
                 continue;
             }
-            c.normalImpulse = found->normalRate * tau;
-            const Vec3 friction = found->frictionRate * tau;
+            // scaled down to a shorter sub-step, never up: a short sub-step's impulse is mostly
+            // the stopping of an approach, not a force that lasts (11.6)
+            const Real shorter = std::min(1.0, tau / found->tau);
+            c.normalImpulse = shorter * found->normalImpulse;
+            const Vec3 friction = shorter * found->frictionImpulse;
             c.tangentImpulse1 = glm::dot(c.tangent1, friction);
             c.tangentImpulse2 = glm::dot(c.tangent2, friction);
             const Real bound = c.friction * c.normalImpulse;
@@ -79,9 +82,8 @@ void storeWarmStart(const CoupledIsland& island, std::span<BodySlot> slots,
                 continue;
             }
             cache.push_back({contact.ownerKey, contact.manifold.points[k].id,
-                             c.normalImpulse / tau,
-                             (c.tangentImpulse1 * c.tangent1 + c.tangentImpulse2 * c.tangent2) /
-                                 tau});
+                             c.normalImpulse,
+                             c.tangentImpulse1 * c.tangent1 + c.tangentImpulse2 * c.tangent2, tau});
         }
     }
 }

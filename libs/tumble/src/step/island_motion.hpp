@@ -11,15 +11,15 @@
 
 namespace tumble {
 
-/// (11.6): each constraint starts from its point's impulses of the last step, per second, scaled
-/// to tau and clamped to its cone; a point in contact with none starts from the weight it
+/// (11.6): each constraint starts from its point's impulses of the last sub-step, scaled down to
+/// a shorter tau (never up) and clamped to its cone; a point in contact with none starts from the weight it
 /// carries (11.13).
 void loadWarmStart(const CoupledIsland& island, std::span<const BodySlot> slots,
                    std::span<const IslandContact> contacts,
                    std::span<ContactConstraint> constraints, Real tau,
                    const WorldSettings& settings);
 
-/// Keeps the impulses of a solve of length tau, per second, in the owners' caches.
+/// Keeps the impulses of a solve of length tau, and tau, in the owners' caches.
 void storeWarmStart(const CoupledIsland& island, std::span<BodySlot> slots,
                     std::span<const IslandContact> contacts,
                     std::span<const ContactConstraint> constraints, Real tau);

@@ -1,0 +1,140 @@
+// The shipped scenarios of bodies that touch, run to their end: each ends as its comment says
+// (issue 15: a stack, a pyramid, Newton's cradle, dominoes, a tower knocked down, dice in a tray).
+#include "tumble/scenario/runner.hpp"
+#include "tumble/scenario/scenario.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace tumble::scenario {
+namespace {
+
+/// The scenario run to its duration.
+struct Finished {
+    Scenario scenario;
+    std::vector<Vec3> startPositions;
+    std::vector<Quat> startOrientations;
+    Runner runner;
+
+    explicit Finished(const std::string& file)
+        : scenario(loadScenario(std::filesystem::path(TUMBLE_SCENARIO_DIR) / file)),
+          runner(scenario)
+    {
+        for (const BodyId id : runner.bodies()) {
+            startPositions.push_back(runner.world().body(id).position);
+            startOrientations.push_back(runner.world().body(id).orientation);
+        }
+        while (runner.time() < scenario.duration - 0.5 * scenario.dt) {
+            runner.step();
+        }
+    }
+
+    [[nodiscard]] const Body& body(std::size_t i) const
+    {
+        return runner.world().body(runner.bodies()[i]);
+    }
+    /// Angle between a body's start and end orientation, rad.
+    [[nodiscard]] Real turned(std::size_t i) const
+    {
+        const Real cosine = std::min(1.0, std::abs(glm::dot(body(i).orientation,
+                                                             startOrientations[i])));
+        return 2.0 * std::acos(cosine);
+    }
+};
+
+Real sideways(const Vec3& from, const Vec3& to)
+{
+    return std::hypot(to.x - from.x, to.z - from.z);
+}
+
+TEST(ContactScenarios, TheStackOfTenStandsWithinAMillimetre)
+{
+    const Finished run("stack_10.toml");
+    for (std::size_t i = 0; i < run.runner.bodies().size(); ++i) {
+        EXPECT_LT(sideways(run.startPositions[i], run.body(i).position), 1e-3) << i;
+        EXPECT_NEAR(run.body(i).position.y, run.startPositions[i].y, 1e-3) << i;
+    }
+}
+
+TEST(ContactScenarios, ThePyramidOf55SettlesAndStands)
+{
+    const Finished run("pyramid_55.toml");
+    ASSERT_EQ(run.runner.bodies().size(), 55u);
+    for (std::size_t i = 0; i < run.runner.bodies().size(); ++i) {
+        EXPECT_LT(sideways(run.startPositions[i], run.body(i).position), 1e-2) << i;
+        EXPECT_LT(run.turned(i), 1e-2) << i;
+        EXPECT_LT(glm::length(run.body(i).linearVelocity), 1e-3) << i;
+    }
+}
+
+TEST(ContactScenarios, NewtonsCradlePassesTheVelocityToTheLastCube)
+{
+    const Finished run("newtons_cradle.toml");
+    // bodies in file order: cube1..cube3, then the striker
+    EXPECT_NEAR(run.body(0).linearVelocity.x, 0.0, 1e-6);
+    EXPECT_NEAR(run.body(1).linearVelocity.x, 0.0, 1e-6);
+    EXPECT_NEAR(run.body(2).linearVelocity.x, 1.0, 1e-6);
+    EXPECT_NEAR(run.body(3).linearVelocity.x, 0.0, 1e-6);
+}
+
+TEST(ContactScenarios, EveryDominoFalls)
+{
+    const Finished run("dominoes.toml");
+    for (std::size_t i = 0; i < run.runner.bodies().size(); ++i) {
+        // each leans on the next or lies on the ground: turned by well over 30 degrees
+        EXPECT_GT(run.turned(i), 0.5) << i;
+        EXPECT_TRUE(run.body(i).asleep) << i;
+    }
+}
+
+TEST(ContactScenarios, TheThrownCubeBringsTheTowerDown)
+{
+    const Finished run("tower_knockdown.toml");
+    // every block ends on the ground (its half size 0.25 m up) and at rest
+    for (std::size_t i = 0; i + 1 < run.runner.bodies().size(); ++i) {
+        EXPECT_LT(run.body(i).position.y, 0.26) << i;
+        EXPECT_TRUE(run.body(i).asleep) << i;
+    }
+}
+
+TEST(ContactScenarios, ThreeDiceComeToRestFlatInsideTheTrayWithoutOverlapping)
+{
+    const Finished run("dice_three_in_tray.toml");
+    std::vector<std::size_t> dice;
+    for (std::size_t i = 0; i < run.runner.bodies().size(); ++i) {
+        if (!run.body(i).isStatic()) {
+            dice.push_back(i);
+        }
+    }
+    ASSERT_EQ(dice.size(), 3u);
+    for (const std::size_t i : dice) {
+        const Body& die = run.body(i);
+        EXPECT_TRUE(die.asleep) << i;
+        // inside the walls' inner faces (x within 0.15, z within 0.10), on the floor (y = 0)
+        EXPECT_LT(std::abs(die.position.x), 0.15 - 0.008 + 1e-6) << i;
+        EXPECT_LT(std::abs(die.position.z), 0.10 - 0.008 + 1e-6) << i;
+        // flat: some face normal within 5 degrees of vertical
+        const Mat3 rotation = die.rotation();
+        const Real upright = std::max({std::abs(rotation[0].y), std::abs(rotation[1].y),
+                                       std::abs(rotation[2].y)});
+        EXPECT_GT(upright, std::cos(5.0 * 3.14159265358979 / 180.0)) << i;
+        EXPECT_NEAR(die.position.y, 0.008, 1e-4) << i;
+        for (const std::size_t j : dice) {
+            if (j > i) {
+                EXPECT_LT(cuboidOverlapDepth({die.position, die.orientation},
+                                             die.shape.halfExtents(),
+                                             {run.body(j).position, run.body(j).orientation},
+                                             run.body(j).shape.halfExtents()),
+                          1e-4)
+                    << i << " " << j;
+            }
+        }
+    }
+}
+
+} // namespace
+} // namespace tumble::scenario
