@@ -129,5 +129,56 @@ INSTANTIATE_TEST_SUITE_P(CubesMassesSteps, StackOfCubes,
                                            Stack{20, 1.0, 1.0 / 240},
                                            Stack{10, 100.0, 1.0 / 60}));
 
+TEST(IslandThreads, TouchingBodiesGiveTheSameStatesAndEventsOnAnyThreadCount)
+{
+    // sixteen little piles, each a tilted cube dropped onto a cube resting on another: sixteen
+    // islands that tumble and settle, spread over the threads in any order
+    std::vector<World> worlds;
+    for (const int threads : {1, 2, 3}) {
+        World& world = worlds.emplace_back(WorldSettings{.threads = threads});
+        world.setGround(Plane{});
+        for (int pile = 0; pile < 16; ++pile) {
+            const Vec3 base(3.0 * (pile % 4), 0.0, 3.0 * (pile / 4));
+            const Material material{.restitution = 0.3, .friction = 0.5};
+            for (int k = 0; k < 2; ++k) {
+                world.createBody(BodyDef{.shape = Cuboid{Vec3(1.0)},
+                                         .position = base + Vec3(0.0, 0.5 + k, 0.0),
+                                         .material = material});
+            }
+            world.createBody(BodyDef{
+                .shape = Cuboid{Vec3(0.8)},
+                .position = base + Vec3(0.1 * (pile % 3), 3.0, 0.05 * (pile % 5)),
+                .orientation = axisAngle(glm::normalize(Vec3(1.0, 0.3 * pile, 0.5)), 0.4),
+                .angularVelocity = Vec3(0.5, -0.2 * (pile % 4), 0.3),
+                .material = material});
+        }
+    }
+    int impacts = 0;
+    for (int step = 0; step < 240; ++step) {
+        for (World& world : worlds) {
+            world.step(1.0 / 240);
+        }
+        const World& reference = worlds[0];
+        impacts += static_cast<int>(reference.collisions().size());
+        for (std::size_t w = 1; w < worlds.size(); ++w) {
+            const World& other = worlds[w];
+            ASSERT_EQ(other.collisions().size(), reference.collisions().size()) << step;
+            for (std::size_t e = 0; e < reference.collisions().size(); ++e) {
+                ASSERT_EQ(other.collisions()[e].manifold.body, reference.collisions()[e].manifold.body);
+                ASSERT_EQ(other.collisions()[e].normalImpulse, reference.collisions()[e].normalImpulse);
+            }
+            ASSERT_EQ(other.restEvents().size(), reference.restEvents().size()) << step;
+            for (const BodyId id : reference.bodyIds()) {
+                ASSERT_EQ(other.body(id).position, reference.body(id).position) << step;
+                ASSERT_EQ(other.body(id).orientation, reference.body(id).orientation) << step;
+                ASSERT_EQ(other.body(id).linearVelocity, reference.body(id).linearVelocity);
+                ASSERT_EQ(other.body(id).angularVelocity, reference.body(id).angularVelocity);
+            }
+        }
+    }
+    // the scene is not trivial: every pile's top cube landed on its pile
+    EXPECT_GE(impacts, 16);
+}
+
 } // namespace
 } // namespace tumble
