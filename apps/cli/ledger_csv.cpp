@@ -1,6 +1,7 @@
 #include "ledger_csv.hpp"
 
 #include <cstdio>
+#include <string>
 
 namespace tumble::cli {
 
@@ -38,7 +39,7 @@ ContactsCsv::ContactsCsv(const std::string& path) : m_output(path)
 {
     std::fputs("time,body,phase,vertex,px,py,pz,rx,ry,rz,nx,ny,nz,vn_before,vtx_before,"
                "vty_before,vtz_before,vn_after,vtx_after,vty_after,vtz_after,normal_impulse,"
-               "friction_x,friction_y,friction_z,friction_state,restitution\n",
+               "friction_x,friction_y,friction_z,friction_state,restitution,other\n",
                m_output.handle());
 }
 
@@ -47,6 +48,11 @@ void ContactsCsv::writeStep(const scenario::Runner& runner)
     for (const ContactRecord& record : runner.world().contactRecords()) {
         const ContactManifold& manifold = record.manifold;
         const std::string name = csvField(runner.bodyName(runner.bodyIndex(manifold.body)));
+        // what the body touches: another body by name, a plane by index, or the ground
+        const std::string other =
+            !manifold.other.isNull()
+                ? csvField(runner.bodyName(runner.bodyIndex(manifold.other)))
+                : (manifold.plane >= 0 ? "plane " + std::to_string(manifold.plane) : "ground");
         const Vec3& n = manifold.normal;
         for (int i = 0; i < manifold.pointCount; ++i) {
             const ContactPoint& point = manifold.points[i];
@@ -58,13 +64,14 @@ void ContactsCsv::writeStep(const scenario::Runner& runner)
             std::fprintf(
                 m_output.handle(),
                 "%.17g,%s,%s,%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,"
-                "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%s,%s\n",
+                "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%s,%s,%s\n",
                 record.time, name.c_str(), contactPhaseName(record.phase), point.vertex,
                 point.position.x, point.position.y, point.position.z, offset.x, offset.y, offset.z,
                 n.x, n.y, n.z, normalBefore, tangentBefore.x, tangentBefore.y, tangentBefore.z,
                 normalAfter, tangentAfter.x, tangentAfter.y, tangentAfter.z, point.normalImpulse,
                 point.frictionImpulse.x, point.frictionImpulse.y, point.frictionImpulse.z,
-                point.sliding ? "slip" : "stick", restitutionStateName(point.restitution));
+                point.sliding ? "slip" : "stick", restitutionStateName(point.restitution),
+                other.c_str());
         }
     }
 }

@@ -55,7 +55,8 @@ struct ContactConstraint {
     /// Lowest normal velocity the solve allows: -e vn for an impact, 0 in contact, -gap / tau
     /// for a point still apart (11.4).
     Real targetNormalVelocity = 0.0;
-    /// Relative normal velocity when the constraint was prepared, m/s.
+    /// Relative velocity u and its normal part when the constraint was prepared, m/s.
+    Vec3 velocityBefore{0.0};
     Real normalVelocityBefore = 0.0;
     Real normalImpulse = 0.0;
     Real tangentImpulse1 = 0.0;

@@ -67,6 +67,7 @@ void prepareConstraint(ContactConstraint& c, std::span<const SolverBody> bodies,
                      k11 * invDeterminant};
     const Vec3 velocity = relativeVelocity(c, a, b);
     const Real normalVelocity = glm::dot(c.normal, velocity);
+    c.velocityBefore = velocity;
     c.normalVelocityBefore = normalVelocity;
     const Vec3 sliding = velocity - normalVelocity * c.normal;
     const bool sticking = lengthSquared(sliding) < kStickingSpeed * kStickingSpeed;

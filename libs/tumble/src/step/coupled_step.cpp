@@ -88,6 +88,8 @@ private:
     std::vector<Real> m_energies;
     std::vector<Vec3> m_velocityStart;
     std::vector<Vec3> m_angularVelocityStart;
+    /// Time into the step at which the current sub-step starts, s.
+    Real m_elapsed = 0.0;
 };
 
 void CoupledStep::gatherBodies()
@@ -107,14 +109,13 @@ void CoupledStep::run(Real dt)
     for (std::size_t i = 0; i < count; ++i) {
         m_energies[i] = energyOf(body(i), m_settings.gravity);
     }
-    Real elapsed = 0.0;
     for (int substep = 0;; ++substep) {
-        const Real remaining = dt - elapsed;
+        const Real remaining = dt - m_elapsed;
         // narrow phase: every point within reach of the rest of the step
         findIslandContacts(m_island, m_slots, m_context, remaining, m_contacts);
         buildConstraints(m_contacts, m_slots, m_island, m_constraints);
         // impacts of the points in contact now, all together (11.4)
-        resolveImpacts(m_context.time + elapsed);
+        resolveImpacts(m_context.time + m_elapsed);
         // velocities over the rest of the step, shortened to the next impact (11.8)
         Real tau = remaining;
         solveSubstep(tau);
@@ -133,8 +134,8 @@ void CoupledStep::run(Real dt)
         if (!(tau < remaining)) {
             break;
         }
-        elapsed += tau;
-        if (!(elapsed < dt)) {
+        m_elapsed += tau;
+        if (!(m_elapsed < dt)) {
             break;
         }
     }
@@ -186,8 +187,13 @@ void CoupledStep::resolveImpacts(Real time)
                     energyAfter - m_energies[i], true);
         m_energies[i] = energyAfter;
     }
-    recordIslandImpacts(m_island, m_slots, m_contacts, impact, kineticBefore, kImpactSpeed, time,
-                        m_events);
+    recordIslandImpacts(m_island, m_slots, m_contacts, impact, m_bodies, kineticBefore,
+                        kImpactSpeed, time, m_events);
+    if (m_settings.recordContacts) {
+        recordIslandContacts(ContactPhase::Impact, m_island, m_slots, m_contacts, impact,
+                             m_bodies, kineticBefore, m_settings.contactTolerance, time,
+                             m_events);
+    }
 }
 
 std::vector<ContactConstraint> CoupledStep::impactConstraints() const
@@ -281,6 +287,11 @@ void CoupledStep::finishSubstep(Real tau)
         m_energies[i] = energyAfter;
     }
     storeWarmStart(m_island, m_slots, m_contacts, m_constraints, tau);
+    if (m_settings.recordContacts) {
+        recordIslandContacts(ContactPhase::Resting, m_island, m_slots, m_contacts, m_constraints,
+                             m_bodies, kineticBefore, m_settings.contactTolerance,
+                             m_context.time + m_elapsed, m_events);
+    }
     pushOutOfPenetration(m_island, m_slots, m_constraints, tau, m_settings);
     for (std::size_t i = 0; i < count; ++i) {
         m_energies[i] = bookCorrection(body(i), m_energies[i], m_settings.gravity);
