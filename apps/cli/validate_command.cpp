@@ -17,6 +17,15 @@
 namespace tumble::cli {
 namespace {
 
+/// An observed order with two decimals; a slope within rounding of zero prints as 0.00.
+std::string formatOrder(Real order)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f", std::abs(order) < 0.005 ? 0.0 : order);
+    return text;
+}
+
+
 std::string stepName(Real dt)
 {
     const long long perSecond = std::llround(1.0 / dt);
@@ -162,7 +171,7 @@ int validateCommand(const ValidateOptions& options)
         for (const Real error : row.errors) {
             out << padded(formatError(error), 10);
         }
-        out << (row.order ? formatFixed(*row.order).substr(0, 4) : std::string("exact to rounding"))
+        out << (row.order ? formatOrder(*row.order) : std::string("exact to rounding"))
             << " (" << (c.expectedOrder == 0 ? std::string("exact") : std::to_string(c.expectedOrder))
             << ")\n";
         study.push_back(row);

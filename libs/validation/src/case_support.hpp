@@ -30,5 +30,6 @@ Quantity quantity(std::string name, Real exact, Real value, Real tolerance, std:
 /// Cases of each file, appended in document order.
 void addRigidBodyCases(std::vector<Case>& cases);
 void addContactCases(std::vector<Case>& cases);
+void addTouchingCases(std::vector<Case>& cases);
 
 } // namespace tumble::validation

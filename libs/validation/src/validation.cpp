@@ -62,6 +62,7 @@ std::vector<Case> cases()
     std::vector<Case> all;
     addRigidBodyCases(all);
     addContactCases(all);
+    addTouchingCases(all);
     return all;
 }
 
