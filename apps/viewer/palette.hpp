@@ -31,6 +31,8 @@ inline glm::vec3 faceColour(CuboidFace face)
 /// Around the 3D view: the panels' background (ImGui's dark window colour).
 inline constexpr glm::vec3 kBackground{0.06f, 0.06f, 0.06f};
 inline constexpr glm::vec3 kEdge{0.08f, 0.08f, 0.10f};
+/// Static geometry (walls, trays, plane patches): the face colours dimmed towards grey.
+inline constexpr glm::vec3 kStaticTint{0.45f, 0.45f, 0.47f};
 inline constexpr glm::vec3 kSelectedEdge{0.98f, 0.98f, 0.98f};
 inline constexpr glm::vec3 kSkyTop{0.40f, 0.45f, 0.52f};
 inline constexpr glm::vec3 kSkyHorizon{0.78f, 0.80f, 0.83f};

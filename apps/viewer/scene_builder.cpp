@@ -7,6 +7,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 namespace tumble::viewer {
 namespace {
@@ -73,6 +74,55 @@ void addContacts(SceneDrawList& list, const ContactManifold& contacts)
     }
 }
 
+/// A square patch of a plane as a thin fixed cuboid: its y axis along the normal, its top face on
+/// the plane, wide enough to hold every body's projection.
+CuboidInstance planePatchOf(const StaticPlane& plane, const World& world,
+                            std::span<const BodyId> bodies)
+{
+    const glm::vec3 point(plane.point);
+    const glm::vec3 normal(plane.normal);
+    float half = kPlanePatchMargin;
+    for (const BodyId id : bodies) {
+        const Body& body = world.body(id);
+        const glm::vec3 offset = glm::vec3(body.position) - point;
+        half = std::max(half, glm::length(offset - glm::dot(offset, normal) * normal) +
+                                  0.5f * static_cast<float>(glm::length(body.shape.size)) +
+                                  kPlanePatchMargin);
+    }
+    // the shortest turn of +y onto the normal (half a turn about x for -y)
+    const glm::vec3 up(0.0f, 1.0f, 0.0f);
+    const glm::vec3 axis = glm::cross(up, normal);
+    const float along = glm::dot(up, normal);
+    const glm::quat rotation =
+        glm::length(axis) > 1e-6f
+            ? glm::angleAxis(std::atan2(glm::length(axis), along), glm::normalize(axis))
+            : (along > 0.0f ? glm::quat(1.0f, 0.0f, 0.0f, 0.0f) : glm::quat(0.0f, 1.0f, 0.0f, 0.0f));
+    const glm::mat4 model =
+        glm::scale(glm::translate(glm::mat4(1.0f), point - 0.5f * kPlanePatchThickness * normal) *
+                       glm::mat4_cast(rotation),
+                   glm::vec3(2.0f * half, kPlanePatchThickness, 2.0f * half));
+    return {.model = model,
+            .normalMatrix = glm::inverseTranspose(glm::mat3(model)),
+            .centre = point,
+            .radius = half,
+            .selected = false,
+            .fixed = true};
+}
+
+/// The points where bodies touch each other or a plane in the last step (the contact ledger's
+/// resting records, kept when the world records contacts).
+void addBodyContacts(SceneDrawList& list, const World& world)
+{
+    for (const ContactRecord& record : world.contactRecords()) {
+        const ContactManifold& manifold = record.manifold;
+        if (record.phase != ContactPhase::Resting ||
+            (manifold.other.isNull() && manifold.plane < 0)) {
+            continue;
+        }
+        addContacts(list, manifold);
+    }
+}
+
 } // namespace
 
 SceneDrawList buildScene(const World& world, std::span<const BodyId> bodies,
@@ -84,8 +134,20 @@ SceneDrawList buildScene(const World& world, std::span<const BodyId> bodies,
     list.gridHeight =
         list.gridIsGround ? static_cast<float>(world.ground()->height) : referenceHeight;
 
+    for (const StaticPlane& plane : world.planes()) {
+        list.cuboids.push_back(planePatchOf(plane, world, bodies));
+    }
+    if (settings.showContacts) {
+        addBodyContacts(list, world);
+    }
     for (std::size_t i = 0; i < bodies.size(); ++i) {
         const Body& body = world.body(bodies[i]);
+        if (body.isStatic()) {
+            CuboidInstance fixed = cuboidOf(body, false);
+            fixed.fixed = true;
+            list.cuboids.push_back(fixed);
+            continue;
+        }
         list.cuboids.push_back(cuboidOf(body, i == settings.selectedBody && bodies.size() > 1));
         // arrows as thick as suits the body: thin on a small cube, thicker on a large block
         const float arrowRadius = std::clamp(0.02f * list.cuboids.back().radius, 0.015f, 0.15f);

@@ -26,6 +26,8 @@ struct CuboidInstance {
     /// Radius of the bounding sphere, m.
     float radius = 0.0f;
     bool selected = false;
+    /// Static geometry (a static body, a patch of a plane): drawn dimmed.
+    bool fixed = false;
 };
 
 struct ArrowInstance {
@@ -57,6 +59,10 @@ struct SceneDrawList {
 
 /// Arrows shorter than this are left out, m.
 inline constexpr float kMinArrowLength = 1e-3f;
+/// Half the side of the square patch drawn for a plane beyond the farthest body from its point,
+/// and its thickness, m.
+inline constexpr float kPlanePatchMargin = 2.0f;
+inline constexpr float kPlanePatchThickness = 0.01f;
 /// Marker sizes, pixels.
 inline constexpr float kVertexMarkerPixels = 11.0f;
 inline constexpr float kAverageMarkerPixels = 16.0f;

@@ -68,6 +68,8 @@ void SimRunner::reset() { start(m_scenario); }
 void SimRunner::start(scenario::Scenario scenario)
 {
     m_scenario = std::move(scenario);
+    // the contact ledger's records are where the view finds contacts between bodies
+    m_scenario.settings.recordContacts = true;
     m_runner = std::make_unique<scenario::Runner>(m_scenario);
     m_lastCollisions.assign(m_runner->bodies().size(), std::nullopt);
     m_accumulator = FixedStepAccumulator(m_scenario.dt, maxStepsPerFrame(m_scenario.dt));

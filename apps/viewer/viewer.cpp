@@ -7,6 +7,7 @@
 #include "viewer/impulse_experiments.hpp"
 #include "viewer/input.hpp"
 #include "viewer/log_buffer.hpp"
+#include "viewer/picking.hpp"
 #include "viewer/plot_history.hpp"
 #include "viewer/renderer/renderer.hpp"
 #include "viewer/scenario_catalog.hpp"
@@ -122,6 +123,29 @@ void applyRequests(ViewerState& state, const glm::ivec2& size)
     }
 }
 
+/// A click (a press and release without dragging) in the 3D view selects the moving body under
+/// the pointer for the inspector and the plots.
+void pickWithMouse(ViewerState& state, const ViewRegion& region)
+{
+    const ImGuiIO& io = ImGui::GetIO();
+    constexpr float kClickSlopSquared = 9.0f;
+    if (io.WantCaptureMouse || !ImGui::IsMouseReleased(ImGuiMouseButton_Left) ||
+        io.MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] > kClickSlopSquared) {
+        return;
+    }
+    const glm::vec2 pixel = glm::vec2(io.MousePos.x, io.MousePos.y) - region.min;
+    if (pixel.x < 0.0f || pixel.y < 0.0f || pixel.x > region.size().x ||
+        pixel.y > region.size().y) {
+        return;
+    }
+    const std::optional<std::size_t> picked =
+        pickBody(pixelRay(state.camera, pixel, region.size()), state.sim.world(),
+                 state.sim.runner().bodies());
+    if (picked) {
+        state.settings.selectedBody = *picked;
+    }
+}
+
 void runLoop(Window& window, Renderer& renderer, ViewerState& state)
 {
     double last = window.time();
@@ -135,7 +159,9 @@ void runLoop(Window& window, Renderer& renderer, ViewerState& state)
         // input, then the fixed steps this frame's real time made due, then the panels
         window.beginUiFrame();
         const glm::ivec2 display(ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y);
-        handleMouse(state.camera, sceneRegion(state.settings, display).size().y);
+        const ViewRegion region = sceneRegion(state.settings, display);
+        handleMouse(state.camera, region.size().y);
+        pickWithMouse(state, region);
         handleKeys(state, window.takeKeyPresses());
         state.sim.advance(state.frameSeconds);
         if (state.settings.followBody && state.sim.bodyCount() > 0) {

@@ -225,6 +225,7 @@ void Renderer::drawCuboids(const SceneDrawList& scene, const glm::mat4& viewProj
     m_litProgram.set("uTint", glm::vec3(1.0f));
     m_litProgram.set("uEdgeWidth", kEdgeWidth);
     for (const CuboidInstance& cuboid : scene.cuboids) {
+        m_litProgram.set("uTint", cuboid.fixed ? palette::kStaticTint : glm::vec3(1.0f));
         m_litProgram.set("uEdgeColour", cuboid.selected ? palette::kSelectedEdge : palette::kEdge);
         m_litProgram.set("uModel", cuboid.model);
         m_litProgram.set("uNormalMatrix", cuboid.normalMatrix);
