@@ -278,8 +278,9 @@ void Console::printCollision(const scenario::Runner& runner, const CollisionEven
     m_out << "  average: " << formatVec3(manifold.averagePoint())
           << ", penetration = " << formatPrintf("%.3g", manifold.maxPenetration()) << " m\n";
     m_out << "  approach speed = " << formatFixed(event.approachSpeed) << " m/s, "
-          << (event.restitutionApplied ? "restitution applied"
-                                       : "no restitution (slower than the threshold)")
+          << (!event.restitutionApplied ? "no restitution (slower than the threshold)"
+              : event.restitution > 0.0  ? "restitution applied"
+                                         : "restitution applied with elasticity 0 (a plastic impact)")
           << '\n';
     m_out << "  normal impulse = " << formatVec3(event.normalImpulse)
           << " N s, friction impulse = " << formatVec3(event.frictionImpulse) << " N s\n";

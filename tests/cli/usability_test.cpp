@@ -345,4 +345,23 @@ TEST_F(CliTest, ViewAtIsCheckedLikeARunsDuration)
     EXPECT_FALSE(fs::exists(png));
 }
 
+TEST(CliMessages, AnImpactWithElasticityZeroSaysRestitutionAppliedAsTheContactsCsvDoes)
+{
+    // issue 14, item 10: at 6.3 m/s the approach is far above the threshold; with e = 0 the
+    // impact is plastic because of e, not because it was slow
+    const std::string scene = (kScenarioDir / "face_down_drop.toml").string();
+    const Result plastic =
+        runTumble({"run", scene, "--duration", "1", "--set", "cube.elasticity=0"},
+                  Capture::StdoutOnly);
+    EXPECT_EQ(plastic.exitCode, 0);
+    EXPECT_NE(plastic.output.find("approach speed = 6.264184 m/s, restitution applied with "
+                                  "elasticity 0 (a plastic impact)"),
+              std::string::npos)
+        << plastic.output;
+    EXPECT_EQ(plastic.output.find("slower than the threshold"), std::string::npos);
+    const Result bouncing = runTumble({"run", scene, "--duration", "1"}, Capture::StdoutOnly);
+    EXPECT_NE(bouncing.output.find("approach speed = 6.264184 m/s, restitution applied\n"),
+              std::string::npos);
+}
+
 } // namespace

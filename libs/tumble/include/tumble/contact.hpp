@@ -110,6 +110,9 @@ struct CollisionEvent {
     Vec3 frictionImpulse{0.0};
     /// False when the approach was slower than the restitution threshold (a plastic impact).
     bool restitutionApplied = false;
+    /// The coefficient of restitution of the impact (the pair's, (11.7)); 0 makes an impact
+    /// plastic even when restitution applies.
+    Real restitution = 0.0;
     /// Kinetic energy just before and just after the impact, J.
     Real kineticEnergyBefore = 0.0;
     Real kineticEnergyAfter = 0.0;

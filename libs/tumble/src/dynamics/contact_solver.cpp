@@ -570,8 +570,10 @@ ImpactOutcome resolveImpact(Body& body, ContactManifold& manifold,
     const Vec3 angularVelocityBefore = body.angularVelocity;
     PreparedSolve solve;
     prepare(solve, body, manifold, body.material.restitution, settings.restitutionThreshold);
+    outcome.restitution = body.material.restitution;
     for (int i = 0; i < solve.count; ++i) {
-        outcome.restitutionApplied |= solve.points[i].targetNormalVelocity > 0.0;
+        // Newton's law applies to a point faster than the threshold, whatever e (e = 0 included)
+        outcome.restitutionApplied |= solve.points[i].restitution == RestitutionState::Applied;
     }
     solvePoints(body, solve.frame, std::span(solve.points.data(), solve.count), 1.0,
                 settings.iterations, kImpactConvergence, true);
@@ -710,6 +712,7 @@ ImpactOutcome resolveAverageContact(Body& body, ContactManifold& manifold,
     }
     outcome.approachSpeed = -normalVelocity;
     outcome.restitutionApplied = -normalVelocity > settings.restitutionThreshold;
+    outcome.restitution = body.material.restitution;
     const Real restitution = outcome.restitutionApplied ? body.material.restitution : 0.0;
     // (5.7): j = -(1 + e) vn / (1/m + (r x n) . I^-1 (r x n)).
     const Vec3 rn = glm::cross(r, n);

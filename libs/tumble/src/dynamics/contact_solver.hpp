@@ -29,6 +29,8 @@ struct ImpactOutcome {
     /// Fastest approach of a touching vertex before the impact (a positive speed), m/s.
     Real approachSpeed = 0.0;
     bool restitutionApplied = false;
+    /// The coefficient of restitution the impact used.
+    Real restitution = 0.0;
     Real kineticEnergyBefore = 0.0;
     Real kineticEnergyAfter = 0.0;
     /// Sums of the normal and the friction impulses, world frame, N s.

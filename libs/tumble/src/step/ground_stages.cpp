@@ -67,6 +67,7 @@ void recordImpact(const ContactManifold& contacts, const ImpactOutcome& outcome,
     event.normalImpulse = outcome.normalImpulse;
     event.frictionImpulse = outcome.frictionImpulse;
     event.restitutionApplied = outcome.restitutionApplied;
+    event.restitution = outcome.restitution;
     event.kineticEnergyBefore = outcome.kineticEnergyBefore;
     event.kineticEnergyAfter = outcome.kineticEnergyAfter;
     events.collisions.push_back(event);

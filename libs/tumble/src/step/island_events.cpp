@@ -93,6 +93,7 @@ void recordIslandImpacts(const CoupledIsland& island, std::span<const BodySlot> 
             event.normalImpulse += point.normalImpulse * event.manifold.normal;
             event.frictionImpulse += point.frictionImpulse;
             event.restitutionApplied |= point.restitution == RestitutionState::Applied;
+            event.restitution = std::max(event.restitution, points[k].restitution);
         }
         for (const std::uint32_t solver : {contact.solverA, contact.solverB}) {
             if (solver < count) {
