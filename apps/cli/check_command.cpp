@@ -54,6 +54,15 @@ int checkCommand(const CheckOptions& options)
     // building the world catches what only the engine can (it asserts on bad bodies)
     scenario::buildWorld(loaded);
     checkTargets(loaded);
+    // what run would say about the file: impulses it never reaches (the runner applies one within
+    // 1e-9 dt of a step's start in that step)
+    const Real lastApplied = loaded.duration - 1e-9 * loaded.dt;
+    for (const scenario::ImpulseSpec& spec : loaded.impulses) {
+        if (spec.at >= lastApplied) {
+            std::cout << "note: " << spec.label << " at t = " << formatFixed(spec.at)
+                      << " s is after the end of the run and would not be applied\n";
+        }
+    }
     std::cout << options.file << ": ok (" << counted(loaded.bodies.size(), "body", "bodies") << ", "
               << counted(loaded.impulses.size(), "impulse", "impulses") << ", dt=" << loaded.dt
               << ", duration=" << loaded.duration << ")\n";

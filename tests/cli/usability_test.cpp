@@ -364,4 +364,18 @@ TEST(CliMessages, AnImpactWithElasticityZeroSaysRestitutionAppliedAsTheContactsC
               std::string::npos);
 }
 
+TEST(CliMessages, CheckSaysWhatRunWouldAboutAnImpulseAfterTheEnd)
+{
+    // issue 14, item 19: an impulse after the end is reported by check as by run; overlapping
+    // and buried bodies are load errors for both (ScenarioTomlErrors)
+    const std::string scene = (kScenarioDir / "part3_task1_impulse.toml").string();
+    const Result checked =
+        runTumble({"check", scene, "--set", "world.duration=0.5", "--set", "impulse[0].at=2"},
+                  Capture::StdoutOnly);
+    EXPECT_EQ(checked.exitCode, 0);
+    EXPECT_NE(checked.output.find("impulse[0] at t = 2.000000 s is after the end of the run"),
+              std::string::npos)
+        << checked.output;
+}
+
 } // namespace
