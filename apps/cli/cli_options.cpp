@@ -64,6 +64,26 @@ CLI::Validator wholeNumberIn(long long low, long long high, const std::string& l
         "");
 }
 
+CLI::Validator seedNumber()
+{
+    return CLI::Validator(
+        [](std::string& text) -> std::string {
+            const bool digits = !text.empty() && text.size() <= 20 &&
+                                std::all_of(text.begin(), text.end(),
+                                            [](char c) { return c >= '0' && c <= '9'; });
+            errno = 0;
+            if (digits) {
+                (void)std::strtoull(text.c_str(), nullptr, 10);
+            }
+            if (!digits || errno == ERANGE) {
+                return "must be a whole number from 0 to 18446744073709551615, got '" + text +
+                       "'";
+            }
+            return {};
+        },
+        "");
+}
+
 CLI::Validator positiveNumber()
 {
     return CLI::Validator(

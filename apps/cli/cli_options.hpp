@@ -26,6 +26,9 @@ public:
 /// Whole numbers from `low` to `high`, with the range in plain numbers in the message.
 CLI::Validator wholeNumberIn(long long low, long long high, const std::string& lowMeaning = "");
 
+/// A seed: a whole number from 0 to 2^64 - 1, written in decimal digits (no sign).
+CLI::Validator seedNumber();
+
 /// A finite number above zero.
 CLI::Validator positiveNumber();
 

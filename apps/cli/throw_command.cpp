@@ -92,7 +92,9 @@ CLI::App* addThrowCommand(CLI::App& app, ThrowOptions& options)
     command->add_option("--throws", options.throws, "Number of throws (>= 1, default 1000)")
         ->type_name("N")
         ->check(wholeNumberIn(1, std::numeric_limits<std::int64_t>::max() / 2));
-    command->add_option("--seed", options.seed, "Seed of the draws (default 1)")->type_name("S");
+    command->add_option("--seed", options.seed, "Seed of the draws (default 1)")
+        ->type_name("S")
+        ->check(seedNumber());
     addThreadsOption(command, options.threads,
                      "Threads (default 0: one per core, at most " + std::to_string(kMaxThreads) +
                          ")");

@@ -2,6 +2,7 @@
 // test), the summary JSON and the per-throw CSV.
 #include "throw_report.hpp"
 
+#include "console.hpp"
 #include "output_file.hpp"
 
 #include "tumble/scenario/dice_statistics.hpp"
@@ -69,7 +70,10 @@ void printFaceTable(std::ostream& out, const scenario::Scenario& scenario, const
     out << "settled: " << settled << " of " << settled + faces.unsettled()
         << " throws; unsettled (not at rest by max_time = "
         << printed("%g", scenario.throwSpec->maxTime) << " s): " << faces.unsettled() << '\n';
-    if (isCube(scenario)) {
+    if (isCube(scenario) && settled == 0) {
+        out << "chi-square test of uniformity: n/a (no throw settled)\n";
+        printWarning("no throw came to rest within max_time: the faces say nothing");
+    } else if (isCube(scenario)) {
         const std::span<const std::int64_t> faceCounts(faces.counts.data(), kFaceCount);
         const Real statistic = scenario::chiSquareUniformStatistic(faceCounts);
         out << "chi-square test of uniformity (cube, " << kFaceCount - 1

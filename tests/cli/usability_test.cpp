@@ -378,4 +378,22 @@ TEST(CliMessages, CheckSaysWhatRunWouldAboutAnImpulseAfterTheEnd)
         << checked.output;
 }
 
+TEST(CliMessages, ThrowRejectsSeedsOutOfRangeAndSaysNaWhenNothingSettled)
+{
+    // issue 14, item 13
+    expectUsageError({"throw", kDice, "--throws", "3", "--seed", "-1"}, "--seed");
+    expectUsageError({"throw", kDice, "--throws", "3", "--seed", "18446744073709551616"},
+                     "--seed");
+    EXPECT_EQ(runTumble({"throw", kDice, "--throws", "3", "--seed", "18446744073709551615"})
+                  .exitCode,
+              0);
+    const Result unsettled =
+        runTumble({"throw", kDice, "--throws", "3", "--set", "throw.max_time=0.01"});
+    EXPECT_EQ(unsettled.exitCode, 0);
+    EXPECT_NE(unsettled.output.find("n/a (no throw settled)"), std::string::npos)
+        << unsettled.output;
+    EXPECT_NE(unsettled.output.find("tumble: warning: no throw came to rest"), std::string::npos);
+    EXPECT_EQ(unsettled.output.find("p = 1"), std::string::npos);
+}
+
 } // namespace
