@@ -258,7 +258,8 @@ void printDiceRow(const scenario::Scenario& die, long throws, int threads)
 {
     std::vector<scenario::ThrowOutcome> outcomes(static_cast<std::size_t>(throws));
     const auto start = std::chrono::steady_clock::now();
-    runThrows(die, 1, 0, outcomes, threads, false, throws);
+    std::vector<std::uint8_t> finished(outcomes.size(), 0);
+    runThrows(die, 1, 0, outcomes, finished, threads, false, throws);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const long settled = std::count_if(outcomes.begin(), outcomes.end(),

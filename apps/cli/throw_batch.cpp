@@ -94,7 +94,8 @@ bool parallelBuild()
 
 std::int64_t runThrows(const scenario::Scenario& scenario, std::uint64_t seed,
                        std::int64_t firstIndex, std::span<scenario::ThrowOutcome> outcomes,
-                       int threads, bool progress, std::int64_t totalThrows)
+                       std::span<std::uint8_t> finished, int threads, bool progress,
+                       std::int64_t totalThrows)
 {
     const auto count = static_cast<std::int64_t>(outcomes.size());
     std::atomic<std::int64_t> done{0};
@@ -113,14 +114,15 @@ std::int64_t runThrows(const scenario::Scenario& scenario, std::uint64_t seed,
         const std::uint64_t index = static_cast<std::uint64_t>(firstIndex + i);
         outcomes[static_cast<std::size_t>(i)] =
             scenario::runThrow(scenario, scenario::drawThrow(scenario, seed, index));
-        const std::int64_t finished = done.fetch_add(1, std::memory_order_relaxed) + 1;
+        finished[static_cast<std::size_t>(i)] = 1;
+        const std::int64_t finishedCount = done.fetch_add(1, std::memory_order_relaxed) + 1;
 #if TUMBLE_HAS_OPENMP
         const bool drawer = omp_get_thread_num() == 0;
 #else
         const bool drawer = true;
 #endif
         if (progress && drawer) {
-            bar.update(finished);
+            bar.update(finishedCount);
         }
     }
     if (progress) {

@@ -21,10 +21,11 @@ bool parallelBuild();
 
 /// Runs throws firstIndex .. firstIndex + outcomes.size() - 1 into `outcomes` on `threads`
 /// threads. With `progress`, draws a bar on stderr (throws done, throws/s, time left), scaled to
-/// `totalThrows` when this is one of several equal blocks (MPI ranks). Stops early, leaving the
-/// rest unsettled, when SIGINT or SIGTERM arrives; returns the number of throws run.
+/// `totalThrows` when this is one of several equal blocks (MPI ranks). Stops early when SIGINT
+/// or SIGTERM arrives; `finished[i]` is set for each throw that ran. Returns their number.
 std::int64_t runThrows(const scenario::Scenario& scenario, std::uint64_t seed,
                        std::int64_t firstIndex, std::span<scenario::ThrowOutcome> outcomes,
+                       std::span<std::uint8_t> finished,
                        int threads, bool progress, std::int64_t totalThrows);
 
 } // namespace tumble::cli

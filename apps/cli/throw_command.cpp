@@ -117,6 +117,39 @@ CLI::App* addThrowCommand(CLI::App& app, ThrowOptions& options)
     return command;
 }
 
+/// Issue 14, item 14: a throw run stopped by a signal prints and writes the face counts of the
+/// throws it finished, marked as interrupted (the CSV, a row per throw, is not written).
+int reportInterruptedThrows(const ThrowOptions& options, const scenario::Scenario& loaded,
+                            const MpiSession& mpi,
+                            std::span<const scenario::ThrowOutcome> block,
+                            std::span<const std::uint8_t> finished)
+{
+    std::vector<scenario::ThrowOutcome> done;
+    for (std::size_t i = 0; i < block.size(); ++i) {
+        if (finished[i] != 0) {
+            done.push_back(block[i]);
+        }
+    }
+    FaceCounts faces = countFaces(done);
+    mpi.sumToRoot(faces.counts);
+    const int signal = InterruptGuard::received();
+    if (mpi.isRoot()) {
+        const std::int64_t total = faces.settled() + faces.unsettled();
+        printError(std::string("interrupted by ") + signalName(signal != 0 ? signal : 2) +
+                   " after " + std::to_string(total) + " of " + std::to_string(options.throws) +
+                   " throws; the counts below are of those " + std::to_string(total) +
+                   (options.csvPath.empty() ? "" : "; no CSV written"));
+        printFaceTable(std::cout, loaded, faces);
+        if (!options.summaryJsonPath.empty()) {
+            OutputFile json(options.summaryJsonPath);
+            const std::string text = summaryJson(total, faces, options.seed, true);
+            std::fwrite(text.data(), 1, text.size(), json.handle());
+            json.finish();
+        }
+    }
+    return kExitSignalBase + (signal != 0 ? signal : 2);
+}
+
 int throwCommand(const ThrowOptions& options)
 {
     if ((options.replay >= 0) != !options.outPath.empty()) {
@@ -144,21 +177,16 @@ int throwCommand(const ThrowOptions& options)
     const std::int64_t begin = mpi.blockBegin(options.throws);
     const std::int64_t end = mpi.blockEnd(options.throws);
     std::vector<scenario::ThrowOutcome> block(static_cast<std::size_t>(end - begin));
+    std::vector<std::uint8_t> finished(block.size(), 0);
     const bool progress = mpi.isRoot() && isatty(STDERR_FILENO) != 0;
     const InterruptGuard interruptGuard;
     const auto start = std::chrono::steady_clock::now();
     const std::int64_t run =
-        runThrows(loaded, options.seed, begin, block, threads, progress, options.throws);
+        runThrows(loaded, options.seed, begin, block, finished, threads, progress, options.throws);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!mpi.allOk(run == end - begin)) {
-        const int signal = InterruptGuard::received();
-        if (mpi.isRoot()) {
-            printError(std::string("interrupted by ") + signalName(signal != 0 ? signal : 2) +
-                       " after " + std::to_string(run) + " of this process's " +
-                       std::to_string(end - begin) + " throws; no output files written");
-        }
-        return kExitSignalBase + (signal != 0 ? signal : 2);
+        return reportInterruptedThrows(options, loaded, mpi, block, finished);
     }
 
     // face counts are integers, so their sum does not depend on the order of the ranks

@@ -83,7 +83,8 @@ void printFaceTable(std::ostream& out, const scenario::Scenario& scenario, const
     }
 }
 
-std::string summaryJson(std::int64_t throws, const FaceCounts& faces, std::uint64_t seed)
+std::string summaryJson(std::int64_t throws, const FaceCounts& faces, std::uint64_t seed,
+                        bool interrupted)
 {
     std::string json = "{\"throws\": " + std::to_string(throws) + ", \"faces\": {";
     for (int i = 0; i < kFaceCount; ++i) {
@@ -93,7 +94,9 @@ std::string summaryJson(std::int64_t throws, const FaceCounts& faces, std::uint6
         json += std::to_string(faces.counts[static_cast<std::size_t>(i)]);
     }
     json += "}, \"unsettled\": " + std::to_string(faces.unsettled());
-    json += ", \"seed\": " + std::to_string(seed) + "}\n";
+    json += ", \"seed\": " + std::to_string(seed);
+    // a run stopped by a signal counts only the throws it finished, and says so
+    json += interrupted ? ", \"interrupted\": true}\n" : "}\n";
     return json;
 }
 

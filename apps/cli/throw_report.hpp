@@ -35,7 +35,8 @@ void printFaceTable(std::ostream& out, const scenario::Scenario& scenario, const
 
 /// {"throws": N, "faces": {"+x": n, ...}, "unsettled": n, "seed": S} and a newline; the keys
 /// always in this order, so runs that agree give byte-identical files.
-std::string summaryJson(std::int64_t throws, const FaceCounts& faces, std::uint64_t seed);
+std::string summaryJson(std::int64_t throws, const FaceCounts& faces, std::uint64_t seed,
+                        bool interrupted = false);
 
 /// Writes one CSV row per throw (the initial state is drawn again from (seed, index)) to `path`
 /// through an OutputFile: index, face ("unsettled" when not at rest), rest time (empty when

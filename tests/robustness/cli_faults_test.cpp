@@ -165,6 +165,27 @@ TEST(CliFaults, UnderTimeoutARunLeavesItsReportAndACompleteFile)
     expectCompleteCsv(readFile(folder / "t.csv"));
 }
 
+TEST(CliFaults, AnInterruptedThrowReportsTheThrowsItFinished)
+{
+    // issue 14, item 14: Ctrl-C after thousands of throws keeps their counts, marked interrupted
+    const fs::path folder = scratch("interrupted_throw");
+    fs::create_directories(folder);
+    fs::remove(folder / "s.json");
+    const std::string command =
+        "cd '" + folder.string() + "' && timeout --preserve-status -s INT 2 '" +
+        std::string(TUMBLE_EXE) + "' throw '" + std::string(TUMBLE_SCENARIO_DIR) +
+        "/dice_cube.toml' --throws 2000000 --threads 1 --summary-json s.json > t.out 2> t.err";
+    const int status = std::system(command.c_str());
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 130);
+    const std::string out = readFile(folder / "t.out");
+    EXPECT_NE(out.find("chi-square test of uniformity"), std::string::npos) << out;
+    EXPECT_NE(readFile(folder / "t.err").find("interrupted by SIGINT after "), std::string::npos);
+    const std::string json = readFile(folder / "s.json");
+    EXPECT_NE(json.find("\"interrupted\": true"), std::string::npos) << json;
+    EXPECT_EQ(json.find("\"throws\": 0,"), std::string::npos) << json;
+}
+
 TEST(CliFaults, TwoSignalsAtOnceAreOneRequest)
 {
     const fs::path csv = scratch("two_at_once.csv");
