@@ -5,6 +5,7 @@
 #include "csv_writer.hpp"
 #include "interrupt.hpp"
 #include "ledger_csv.hpp"
+#include "progress_bar.hpp"
 
 #include "tumble/scenario/runner.hpp"
 #include "tumble/scenario/scenario.hpp"
@@ -16,6 +17,8 @@
 #include <iostream>
 #include <limits>
 #include <optional>
+
+#include <unistd.h>
 
 namespace tumble::cli {
 namespace {
@@ -129,8 +132,14 @@ int runCommand(const RunOptions& options)
     }
     // SIGINT/SIGTERM stop the loop at the next step; the output is then completed up to there
     const InterruptGuard interruptGuard;
+    // a bar on stderr when it is a terminal and no event lines go there (issue 14, item 15)
+    const bool progress = isatty(STDERR_FILENO) != 0 && (options.quiet || options.csvPath == "-");
+    ProgressBar bar(stepCount, stepCount, "steps");
     long long lastSample = 0;
     for (long long i = 0; i < stepCount && InterruptGuard::received() == 0; ++i) {
+        if (progress) {
+            bar.update(i);
+        }
         // the last step ends at the duration when that is not a multiple of dt (issue 14, item 12)
         const scenario::StepReport report = runner.step(loaded.duration);
         console.printStep(runner, report);
@@ -150,6 +159,9 @@ int runCommand(const RunOptions& options)
             contactsCsv->writeStep(runner);
         }
         warnAboutSolverEnergyGain(runner);
+    }
+    if (progress) {
+        ProgressBar::clear();
     }
     const int stoppedBy = InterruptGuard::received();
     if (stoppedBy != 0) {

@@ -3,6 +3,7 @@
 
 #include "cli_options.hpp"
 #include "interrupt.hpp"
+#include "progress_bar.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -14,65 +15,6 @@
 #endif
 
 namespace tumble::cli {
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-/// Seconds between redraws of the progress bar.
-constexpr double kRedrawInterval = 0.2;
-constexpr int kBarWidth = 30;
-
-/// The one-line bar on stderr, redrawn in place with a carriage return.
-class ProgressBar {
-public:
-    ProgressBar(std::int64_t blockSize, std::int64_t totalThrows)
-        : m_blockSize(blockSize), m_scale(static_cast<double>(totalThrows) /
-                                          static_cast<double>(blockSize > 0 ? blockSize : 1)),
-          m_start(Clock::now()), m_lastDraw(m_start)
-    {
-    }
-
-    /// Redraws when kRedrawInterval has passed since the last time (or when forced).
-    void update(std::int64_t done, bool force = false)
-    {
-        const Clock::time_point now = Clock::now();
-        if (!force && std::chrono::duration<double>(now - m_lastDraw).count() < kRedrawInterval) {
-            return;
-        }
-        m_lastDraw = now;
-        const double elapsed = std::chrono::duration<double>(now - m_start).count();
-        const double fraction =
-            m_blockSize > 0 ? static_cast<double>(done) / static_cast<double>(m_blockSize) : 1.0;
-        const double rate = elapsed > 0.0 ? static_cast<double>(done) * m_scale / elapsed : 0.0;
-        const double left = fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction : 0.0;
-        char bar[kBarWidth + 1];
-        const int filled = static_cast<int>(fraction * kBarWidth);
-        for (int i = 0; i < kBarWidth; ++i) {
-            bar[i] = i < filled ? '#' : '.';
-        }
-        bar[kBarWidth] = '\0';
-        std::fprintf(stderr, "\r[%s] %lld/%lld throws  %.0f throws/s  %.1f s left  ", bar,
-                     static_cast<long long>(static_cast<double>(done) * m_scale),
-                     static_cast<long long>(static_cast<double>(m_blockSize) * m_scale), rate,
-                     left);
-        std::fflush(stderr);
-    }
-
-    /// Clears the line so the report starts on a clean one.
-    static void clear()
-    {
-        std::fprintf(stderr, "\r\033[K");
-        std::fflush(stderr);
-    }
-
-private:
-    std::int64_t m_blockSize;
-    double m_scale;
-    Clock::time_point m_start;
-    Clock::time_point m_lastDraw;
-};
-
-} // namespace
 
 int defaultThreadCount()
 {
@@ -99,7 +41,7 @@ std::int64_t runThrows(const scenario::Scenario& scenario, std::uint64_t seed,
 {
     const auto count = static_cast<std::int64_t>(outcomes.size());
     std::atomic<std::int64_t> done{0};
-    ProgressBar bar(count, totalThrows);
+    ProgressBar bar(count, totalThrows, "throws");
     (void)threads;
 
     // each throw has its own World and generator; thread 0 also draws the bar. A signal skips

@@ -4,6 +4,7 @@
 #include "console.hpp"
 #include "output_file.hpp"
 #include "plot_command.hpp"
+#include "progress_bar.hpp"
 
 #include "tumble/validation/validation.hpp"
 
@@ -13,6 +14,8 @@
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+
+#include <unistd.h>
 
 namespace tumble::cli {
 namespace {
@@ -154,6 +157,11 @@ int validateCommand(const ValidateOptions& options)
     }
     out << "observed order (method)\n";
     std::vector<StudyRow> study;
+    // a bar on stderr over the study's runs when it is a terminal (issue 14, item 15)
+    const bool progress = isatty(STDERR_FILENO) != 0;
+    const auto runs = static_cast<std::int64_t>(cases.size() * studySteps.size());
+    ProgressBar bar(runs, runs, "runs");
+    std::int64_t done = 0;
     for (const validation::Case& c : cases) {
         StudyRow row{c.name, "", c.expectedOrder, {}, std::nullopt};
         Real floor = 0.0;
@@ -165,6 +173,12 @@ int validateCommand(const ValidateOptions& options)
             row.quantityName = quantities.front().name;
             row.errors.push_back(quantities.front().error());
             floor = roundingFloor(quantities.front());
+            if (progress) {
+                bar.update(++done);
+            }
+        }
+        if (progress) {
+            ProgressBar::clear();
         }
         row.order = validation::observedOrder(studySteps, row.errors, floor);
         out << padded(c.name, 30);

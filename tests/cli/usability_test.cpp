@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -394,6 +395,31 @@ TEST(CliMessages, ThrowRejectsSeedsOutOfRangeAndSaysNaWhenNothingSettled)
         << unsettled.output;
     EXPECT_NE(unsettled.output.find("tumble: warning: no throw came to rest"), std::string::npos);
     EXPECT_EQ(unsettled.output.find("p = 1"), std::string::npos);
+}
+
+TEST(CliMessages, RunAndValidateDrawTheirProgressBarOnlyOnATerminal)
+{
+    // issue 14, item 15: the bar goes to stderr when it is a terminal; redirected, stderr stays
+    // clean. On a terminal, `script -qc "tumble run ... --quiet" /dev/null` shows
+    // "[####....] 291/600 steps  ... steps/s  ... s left".
+    const std::string scene = (kScenarioDir / "stack_10.toml").string();
+    const Result run = runTumble({"run", scene, "--quiet"}, Capture::StderrOnly);
+    EXPECT_EQ(run.exitCode, 0);
+    EXPECT_EQ(run.output.find("steps/s"), std::string::npos) << run.output;
+    const Result validate = runTumble({"validate"}, Capture::StderrOnly);
+    EXPECT_EQ(validate.output.find("runs/s"), std::string::npos) << validate.output;
+    // on a terminal (script(1), from Debian's essential bsdutils, gives the run one)
+    const std::string scripted = "script -qc \"" + std::string(TUMBLE_EXE) + " run " + scene +
+                                 " --quiet\" /dev/null 2>&1";
+    FILE* pipe = popen(scripted.c_str(), "r");
+    ASSERT_NE(pipe, nullptr);
+    std::string text;
+    char buffer[4096];
+    for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) {
+        text.append(buffer, n);
+    }
+    pclose(pipe);
+    EXPECT_NE(text.find("steps/s"), std::string::npos) << text;
 }
 
 } // namespace
