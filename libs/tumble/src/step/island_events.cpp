@@ -15,14 +15,21 @@ BodyId idOf(std::span<const BodySlot> slots, std::uint32_t side)
     return BodyId{side, slots[side].generation};
 }
 
-/// The constraints of one contact: they follow one another in the solver's order.
-std::size_t endOfContact(std::span<const ContactConstraint> constraints, std::size_t first)
+/// Calls visit(contact, points) for each contact with the span of its constraints, which follow
+/// one another in the solver's order.
+template <typename Visit>
+void forEachContact(std::span<const IslandContact> contacts,
+                    std::span<const ContactConstraint> constraints, Visit visit)
 {
-    std::size_t last = first;
-    while (last < constraints.size() && constraints[last].contact == constraints[first].contact) {
-        ++last;
+    for (std::size_t first = 0; first < constraints.size();) {
+        std::size_t last = first;
+        while (last < constraints.size() &&
+               constraints[last].contact == constraints[first].contact) {
+            ++last;
+        }
+        visit(contacts[constraints[first].contact], constraints.subspan(first, last - first));
+        first = last;
     }
-    return last;
 }
 
 /// A contact as its reporting side sees it: the moving side that brought more kinetic energy,
@@ -73,16 +80,12 @@ void recordIslandImpacts(const CoupledIsland& island, std::span<const BodySlot> 
                          Real impactSpeed, Real time, StepEvents& events)
 {
     const std::size_t count = island.bodies.size();
-    for (std::size_t first = 0; first < impact.size();) {
-        const std::size_t last = endOfContact(impact, first);
-        const IslandContact& contact = contacts[impact[first].contact];
-        const std::span<const ContactConstraint> points = impact.subspan(first, last - first);
-        first = last;
+    forEachContact(contacts, impact, [&](const IslandContact& contact, auto points) {
         const bool hit = std::any_of(points.begin(), points.end(), [&](const auto& c) {
             return c.normalImpulse > 0.0 && c.normalVelocityBefore < -impactSpeed;
         });
         if (!hit) {
-            continue;
+            return;
         }
         CollisionEvent event;
         event.time = time;
@@ -102,7 +105,7 @@ void recordIslandImpacts(const CoupledIsland& island, std::span<const BodySlot> 
             }
         }
         events.collisions.push_back(event);
-    }
+    });
 }
 
 void recordIslandContacts(ContactPhase phase, const CoupledIsland& island,
@@ -112,17 +115,12 @@ void recordIslandContacts(ContactPhase phase, const CoupledIsland& island,
                           Real tolerance, Real time, StepEvents& events)
 {
     const std::size_t count = island.bodies.size();
-    for (std::size_t first = 0; first < constraints.size();) {
-        const std::size_t last = endOfContact(constraints, first);
-        const IslandContact& contact = contacts[constraints[first].contact];
-        const std::span<const ContactConstraint> points =
-            constraints.subspan(first, last - first);
-        first = last;
+    forEachContact(contacts, constraints, [&](const IslandContact& contact, auto points) {
         const bool touching = std::any_of(points.begin(), points.end(), [&](const auto& c) {
             return c.separation <= tolerance || c.normalImpulse > 0.0;
         });
         if (!touching) {
-            continue;
+            return;
         }
         ContactRecord record;
         record.time = time;
@@ -130,7 +128,7 @@ void recordIslandContacts(ContactPhase phase, const CoupledIsland& island,
         record.manifold = reportedManifold(contact, points, slots, bodies, count, kinetic);
         record.centreOfMass = slots[record.manifold.body.index].body.position;
         events.contactRecords.push_back(record);
-    }
+    });
 }
 
 } // namespace tumble
