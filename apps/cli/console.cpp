@@ -156,7 +156,7 @@ void Console::printHeader(const scenario::Runner& runner, long long stepCount) c
     m_out << "scenario: " << scenario.sourceName << '\n';
     m_out << "dt = " << formatPrintf("%.9g", scenario.dt) << " s" << reciprocalForm(scenario.dt)
           << ", duration = " << formatFixed(scenario.duration) << " s (" << stepCount
-          << " steps), integrator = " << integratorName(settings.integrator)
+          << (stepCount == 1 ? " step" : " steps") << "), integrator = " << integratorName(settings.integrator)
           << ", response = " << responseName(settings.response) << '\n';
     m_out << "gravity = " << formatVec3(settings.gravity) << " m/s^2, ground: ";
     if (scenario.ground) {
@@ -298,7 +298,7 @@ void Console::printSummary(const scenario::Runner& runner) const
 {
     const Vec3& gravity = runner.world().settings().gravity;
     m_out << "final state at t = " << formatFixed(runner.time()) << " s (" << runner.stepCount()
-          << " steps):\n";
+          << (runner.stepCount() == 1 ? " step" : " steps") << "):\n";
     for (std::size_t i = 0; i < runner.bodies().size(); ++i) {
         const Body& body = runner.world().body(runner.bodies()[i]);
         if (body.isStatic()) {

@@ -422,4 +422,21 @@ TEST(CliMessages, RunAndValidateDrawTheirProgressBarOnlyOnATerminal)
     EXPECT_NE(text.find("steps/s"), std::string::npos) << text;
 }
 
+TEST(CliMessages, OneStepIsSingularAndABodyAtTheOriginHasNoNegativeZeroEnergy)
+{
+    // issue 14, item 21 (two of its blemishes)
+    const std::string scene = (kScenarioDir / "part2_task2_impulses.toml").string();
+    const Result one = runTumble({"run", scene, "--quiet", "--dt", "0.01", "--duration", "0.01"},
+                                 Capture::StdoutOnly);
+    EXPECT_NE(one.output.find("(1 step)"), std::string::npos) << one.output;
+    EXPECT_NE(one.output.find("(1 step):"), std::string::npos) << one.output;
+    EXPECT_EQ(one.output.find("(1 steps)"), std::string::npos);
+    const Result csv = runTumble({"run", scene, "--quiet", "--csv", "-", "--duration", "0.01"},
+                                 Capture::StdoutOnly);
+    // the first body sits at the origin: its potential energy is 0, not -0
+    EXPECT_NE(csv.output.find("\n0,left,0,0,0,1,0,0,0,0,0,0,0,0,0,0,0\n"), std::string::npos)
+        << csv.output.substr(0, 300);
+    EXPECT_EQ(csv.output.find(",-0\n"), std::string::npos);
+}
+
 } // namespace

@@ -105,7 +105,7 @@ void readThrow(const TomlReader& reader, const toml::table& root, Scenario& scen
         reader.fail(table, "throw", "a [throw] scenario needs a [ground] for the die to land on");
     }
     if (!scenario.impulses.empty()) {
-        reader.fail(table, "throw", "a [throw] scenario takes no [[impulse]] entries");
+        reader.fail(table, "throw", "a [throw] scenario takes no [[impulse]]");
     }
     ThrowSpec spec;
     readRanges(reader, table, scenario, spec);

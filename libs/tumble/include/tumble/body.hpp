@@ -88,7 +88,8 @@ struct Body {
     /// Potential energy in a uniform gravity field, J, zero at the world origin: -m g . x.
     [[nodiscard]] Real potentialEnergy(const Vec3& gravity) const
     {
-        return -mass * glm::dot(gravity, position);
+        // 0 - x, not -x: a body at the origin has potential energy +0, never -0 in the output
+        return 0.0 - mass * glm::dot(gravity, position);
     }
     /// Velocity of the material point at `worldPoint`: v + w x r.
     [[nodiscard]] Vec3 velocityAt(const Vec3& worldPoint) const
