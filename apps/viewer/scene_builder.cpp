@@ -59,18 +59,18 @@ void addBodyVectors(SceneDrawList& list, const Body& body, const ViewerSettings&
     }
 }
 
-void addContacts(SceneDrawList& list, const ContactManifold& contacts)
+void addContacts(SceneDrawList& list, const ContactManifold& contacts, float markerScale)
 {
     for (int i = 0; i < contacts.pointCount; ++i) {
         list.markers.push_back(
             {.position = glm::vec3(contacts.points[static_cast<std::size_t>(i)].position),
              .colour = palette::kContactVertex,
-             .sizePixels = kVertexMarkerPixels});
+             .sizePixels = markerScale * kVertexMarkerPixels});
     }
     if (contacts.pointCount > 0) {
         list.markers.push_back({.position = glm::vec3(contacts.averagePoint()),
                                 .colour = palette::kContactAverage,
-                                .sizePixels = kAverageMarkerPixels});
+                                .sizePixels = markerScale * kAverageMarkerPixels});
     }
 }
 
@@ -111,7 +111,7 @@ CuboidInstance planePatchOf(const StaticPlane& plane, const World& world,
 
 /// The points where bodies touch each other or a plane in the last step (the contact ledger's
 /// resting records, kept when the world records contacts).
-void addBodyContacts(SceneDrawList& list, const World& world)
+void addBodyContacts(SceneDrawList& list, const World& world, float markerScale)
 {
     for (const ContactRecord& record : world.contactRecords()) {
         const ContactManifold& manifold = record.manifold;
@@ -119,11 +119,18 @@ void addBodyContacts(SceneDrawList& list, const World& world)
             (manifold.other.isNull() && manifold.plane < 0)) {
             continue;
         }
-        addContacts(list, manifold);
+        addContacts(list, manifold, markerScale);
     }
 }
 
 } // namespace
+
+float contactMarkerScale(std::size_t bodyCount)
+{
+    // the markers' area shrinks with the number of bodies, down to a third of their size
+    const float scale = std::sqrt(10.0f / static_cast<float>(std::max<std::size_t>(bodyCount, 1)));
+    return std::clamp(scale, kMinMarkerScale, 1.0f);
+}
 
 SceneDrawList buildScene(const World& world, std::span<const BodyId> bodies,
                          std::span<const std::optional<CollisionEvent>> lastCollisions,
@@ -137,8 +144,9 @@ SceneDrawList buildScene(const World& world, std::span<const BodyId> bodies,
     for (const StaticPlane& plane : world.planes()) {
         list.cuboids.push_back(planePatchOf(plane, world, bodies));
     }
+    const float markerScale = contactMarkerScale(bodies.size());
     if (settings.showContacts) {
-        addBodyContacts(list, world);
+        addBodyContacts(list, world, markerScale);
     }
     for (std::size_t i = 0; i < bodies.size(); ++i) {
         const Body& body = world.body(bodies[i]);
@@ -154,7 +162,7 @@ SceneDrawList buildScene(const World& world, std::span<const BodyId> bodies,
         addBodyVectors(list, body, settings, arrowRadius);
 
         if (settings.showContacts) {
-            addContacts(list, world.contactsOf(bodies[i]));
+            addContacts(list, world.contactsOf(bodies[i]), markerScale);
         }
         if (settings.showImpulses && i < lastCollisions.size() && lastCollisions[i]) {
             const CollisionEvent& collision = *lastCollisions[i];

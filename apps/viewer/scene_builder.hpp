@@ -67,6 +67,12 @@ inline constexpr float kPlanePatchThickness = 0.01f;
 inline constexpr float kVertexMarkerPixels = 11.0f;
 inline constexpr float kAverageMarkerPixels = 16.0f;
 
+/// The contact markers' size factor for a scene of this many bodies: 1 up to ten bodies, then
+/// shrinking as 1/sqrt(n) (with a hundred bodies the full-size dots hid the cuboids), never
+/// below kMinMarkerScale.
+inline constexpr float kMinMarkerScale = 0.35f;
+float contactMarkerScale(std::size_t bodyCount);
+
 /// The draw list for `bodies` of `world`. `lastCollisions` is indexed like `bodies`;
 /// `referenceHeight` places the grid when the world has no ground.
 SceneDrawList buildScene(const World& world, std::span<const BodyId> bodies,

@@ -123,4 +123,13 @@ TEST(SceneBuilder, SceneWithoutGroundGetsAReferenceGrid)
 }
 
 } // namespace
+TEST(SceneBuilder, ContactMarkersShrinkInCrowdedScenesButNotBelowAThird)
+{
+    // issue 14, item 18: a hundred bodies' full-size dots hid the cuboids
+    EXPECT_EQ(contactMarkerScale(1), 1.0f);
+    EXPECT_EQ(contactMarkerScale(10), 1.0f);
+    EXPECT_NEAR(contactMarkerScale(40), 0.5f, 1e-6f);
+    EXPECT_EQ(contactMarkerScale(10000), kMinMarkerScale);
+}
+
 } // namespace tumble::viewer

@@ -10,20 +10,25 @@ constexpr float kMinFreeSide = 120.0f;
 
 } // namespace
 
+float leftWidth(float displayWidth) { return std::min(kLeftWidth, kLeftShare * displayWidth); }
+
+float rightWidth(float displayWidth) { return std::min(kRightWidth, kRightShare * displayWidth); }
+
 ViewRegion leftColumn(const glm::vec2& display)
 {
-    return {{kMargin, kMargin}, {kMargin + kLeftWidth, display.y - kMargin}};
+    return {{kMargin, kMargin}, {kMargin + leftWidth(display.x), display.y - kMargin}};
 }
 
 ViewRegion rightColumn(const glm::vec2& display)
 {
-    return {{display.x - kMargin - kRightWidth, kMargin}, {display.x - kMargin, display.y - kMargin}};
+    return {{display.x - kMargin - rightWidth(display.x), kMargin},
+            {display.x - kMargin, display.y - kMargin}};
 }
 
 ViewRegion logRegion(const glm::vec2& display)
 {
-    const float left = kLeftWidth + 2.0f * kMargin;
-    const float right = std::max(display.x - kRightWidth - 2.0f * kMargin, left + 200.0f);
+    const float left = leftWidth(display.x) + 2.0f * kMargin;
+    const float right = std::max(display.x - rightWidth(display.x) - 2.0f * kMargin, left + 200.0f);
     return {{left, display.y - kLogHeight - kMargin}, {right, display.y - kMargin}};
 }
 

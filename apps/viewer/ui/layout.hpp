@@ -11,10 +11,19 @@ namespace tumble::viewer::ui {
 /// Gap between the panels and the window's border, pixels.
 inline constexpr float kMargin = 8.0f;
 /// Widths of the left column (run, scenario, parameters, view) and of the right column
-/// (inspector, plots, impulse tool), and the height of the log along the bottom, pixels.
+/// (inspector, plots, impulse tool), and the height of the log along the bottom, pixels, in a
+/// window wide enough for them.
 inline constexpr float kLeftWidth = 330.0f;
 inline constexpr float kRightWidth = 370.0f;
 inline constexpr float kLogHeight = 170.0f;
+/// In a narrower window the columns shrink to these shares of its width, so the 3D view keeps at
+/// least the rest (issue 14, item 18).
+inline constexpr float kLeftShare = 0.24f;
+inline constexpr float kRightShare = 0.27f;
+
+/// The two columns' widths in a display this wide, pixels.
+float leftWidth(float displayWidth);
+float rightWidth(float displayWidth);
 
 /// The panels' places in a display of this size: the two columns, and the log between them
 /// along the bottom.
