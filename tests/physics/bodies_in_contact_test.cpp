@@ -180,5 +180,32 @@ TEST(IslandThreads, TouchingBodiesGiveTheSameStatesAndEventsOnAnyThreadCount)
     EXPECT_GE(impacts, 16);
 }
 
+TEST(IslandSleep, AStackSleepsAsAWholeAndWakesAsAWhole)
+{
+    // (7.4): three cubes come to rest together; an impulse on the top one wakes all three in
+    // the next step, not one level a step
+    World world(WorldSettings{});
+    world.setGround(Plane{});
+    std::vector<BodyId> stack;
+    for (int k = 0; k < 3; ++k) {
+        stack.push_back(addCube(world, 1.0, 1.0, Vec3(0.0, 0.5 + k, 0.0), Vec3(0.0),
+                                Material{.restitution = 0.0, .friction = 0.5}));
+    }
+    int restEvents = 0;
+    for (int step = 0; step < 240; ++step) {
+        world.step(1.0 / 60);
+        restEvents += static_cast<int>(world.restEvents().size());
+    }
+    EXPECT_EQ(restEvents, 3);
+    for (const BodyId id : stack) {
+        EXPECT_TRUE(world.body(id).asleep);
+    }
+    world.applyImpulse(stack.back(), Vec3(0.2, 0.0, 0.0), world.body(stack.back()).position);
+    world.step(1.0 / 60);
+    for (const BodyId id : stack) {
+        EXPECT_FALSE(world.body(id).asleep);
+    }
+}
+
 } // namespace
 } // namespace tumble

@@ -54,13 +54,15 @@ void World::findPairs(detail::StepScratch& scratch, Real dt)
         }
         const Body& body = slot.body;
         const Transform pose{body.position, body.orientation};
-        const bool movable = !body.isStatic() && !body.asleep;
-        const Aabb box = movable ? sweptCuboidAabb(pose, body.shape.halfExtents(),
-                                                   body.linearVelocity, m_settings.gravity,
-                                                   angularSpeedBound(body), dt, margin)
-                                 : expanded(cuboidAabb(pose, body.shape.halfExtents()), margin);
+        // a sleeping body does not move, but pairs like any dynamic body: its island wakes
+        // with it (7.4)
+        const bool moving = !body.isStatic() && !body.asleep;
+        const Aabb box = moving ? sweptCuboidAabb(pose, body.shape.halfExtents(),
+                                                  body.linearVelocity, m_settings.gravity,
+                                                  angularSpeedBound(body), dt, margin)
+                                : expanded(cuboidAabb(pose, body.shape.halfExtents()), margin);
         scratch.sweptBoxes[index] = box;
-        scratch.proxies.push_back(BroadPhaseProxy{box, index, movable});
+        scratch.proxies.push_back(BroadPhaseProxy{box, index, !body.isStatic()});
     }
     scratch.broadPhase.update(scratch.proxies);
     scratch.links.clear();
@@ -72,16 +74,6 @@ void World::findPairs(detail::StepScratch& scratch, Real dt)
 void World::buildStepIslands(detail::StepScratch& scratch, Real dt)
 {
     (void)dt;
-    // a sleeping body that an awake one may touch wakes, and joins its island this step
-    for (const ProxyPair& link : scratch.links) {
-        Body& a = m_slots[link.a].body;
-        Body& b = m_slots[link.b].body;
-        if (a.asleep != b.asleep && !a.isStatic() && !b.isStatic()) {
-            Body& sleeper = a.asleep ? a : b;
-            sleeper.asleep = false;
-            sleeper.slowTime = 0.0;
-        }
-    }
     scratch.islands.clear();
     // no pairs and no half-spaces: every body is alone with the ground (and nothing allocates)
     if (scratch.links.empty() && m_planes.empty()) {
@@ -90,16 +82,33 @@ void World::buildStepIslands(detail::StepScratch& scratch, Real dt)
         }
         return;
     }
-    scratch.dynamicAwake.assign(m_slots.size(), 0);
+    scratch.dynamic.assign(m_slots.size(), 0);
     for (std::size_t index = 0; index < m_slots.size(); ++index) {
         const BodySlot& slot = m_slots[index];
-        scratch.dynamicAwake[index] = slot.alive && !slot.body.isStatic() && !slot.body.asleep;
+        scratch.dynamic[index] = slot.alive && !slot.body.isStatic();
     }
-    const Islands islands = buildIslands(m_slots.size(), scratch.dynamicAwake, scratch.links);
+    const Islands islands = buildIslands(m_slots.size(), scratch.dynamic, scratch.links);
     const IslandLinks links = linksOf(islands, scratch.links);
     for (std::size_t k = 0; k < islands.count(); ++k) {
         const std::span<const std::uint32_t> bodies = islands.island(k);
         const std::span<const std::uint32_t> islandLinks = links.island(k);
+        // (7.4): an island sleeps as a whole, and wakes as a whole when one of its bodies wakes
+        const bool awake = std::any_of(bodies.begin(), bodies.end(), [&](std::uint32_t body) {
+            return !m_slots[body].body.asleep;
+        });
+        if (!awake) {
+            for (const std::uint32_t body : bodies) {
+                m_slots[body].coupled = false;
+            }
+            continue;
+        }
+        for (const std::uint32_t body : bodies) {
+            Body& woken = m_slots[body].body;
+            if (woken.asleep) {
+                woken.asleep = false;
+                woken.slowTime = 0.0;
+            }
+        }
         // the exact path takes a body alone whose only possible obstacle is the ground
         bool coupled = bodies.size() > 1 || !islandLinks.empty();
         for (const StaticPlane& plane : m_planes) {

@@ -19,7 +19,8 @@ struct StepScratch {
     BroadPhase broadPhase;
     /// The broad phase's pairs as slot indices, lower first.
     std::vector<ProxyPair> links;
-    std::vector<std::uint8_t> dynamicAwake;
+    /// 1 for a live dynamic body, awake or asleep: islands are built over all of them.
+    std::vector<std::uint8_t> dynamic;
     std::vector<CoupledIsland> islands;
     std::vector<StepEvents> islandEvents;
 };
