@@ -127,7 +127,9 @@ TEST_P(StackOfCubes, StandsStillForTenSecondsWithoutSleeping)
 INSTANTIATE_TEST_SUITE_P(CubesMassesSteps, StackOfCubes,
                          ::testing::Values(Stack{5, 1.0, 1.0 / 60}, Stack{20, 1.0, 1.0 / 60},
                                            Stack{20, 1.0, 1.0 / 240},
-                                           Stack{10, 100.0, 1.0 / 60}));
+                                           Stack{10, 100.0, 1.0 / 60},
+                                           Stack{20, 100.0, 1.0 / 60},
+                                           Stack{20, 0.01, 1.0 / 60}));
 
 TEST(IslandThreads, TouchingBodiesGiveTheSameStatesAndEventsOnAnyThreadCount)
 {

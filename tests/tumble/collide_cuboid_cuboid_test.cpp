@@ -313,6 +313,30 @@ TEST(CollideCuboidCuboid, IdsAreStableUnderATinyTranslation)
     EXPECT_EQ(collideCuboids(edgeA, Vec3(1.0), edgeB, Vec3(1.0), kMargin).points[0].id, edgeId);
 }
 
+TEST(CollideCuboidCuboid, EqualCubesStackedKeepTheirCornersUnderRoundingLevelTurns)
+{
+    // (9.7): the incident corners lie on the reference face's edges; turns and shifts of 1e-15
+    // put them a rounding error in or out. Each pose still gives the four corners of the face,
+    // with the names of the aligned stack, so warm starting finds them from step to step.
+    const Transform a{Vec3(0.0), kIdentity};
+    const PairManifold aligned = collideCuboids(a, Vec3(1.0), cubeOnCube(kIdentity, 0.0), Vec3(1.0),
+                                                kMargin);
+    ASSERT_EQ(aligned.pointCount, 4);
+    std::mt19937_64 random(15);
+    std::uniform_real_distribution<Real> unit(-1.0, 1.0);
+    for (int trial = 0; trial < 200; ++trial) {
+        const Vec3 axis = glm::normalize(Vec3(unit(random), unit(random), unit(random)));
+        Transform b = cubeOnCube(axisAngle(axis, 1e-15 * unit(random)), 0.0);
+        b.position += 1e-15 * Vec3(unit(random), unit(random), unit(random));
+        const PairManifold manifold = collideCuboids(a, Vec3(1.0), b, Vec3(1.0), kMargin);
+        ASSERT_EQ(manifold.pointCount, 4) << "trial " << trial;
+        for (int i = 0; i < 4; ++i) {
+            EXPECT_TRUE(hasPointAt(manifold, aligned.points[i].position)) << "trial " << trial;
+            EXPECT_EQ(manifold.points[i].id, aligned.points[i].id) << "trial " << trial;
+        }
+    }
+}
+
 TEST(CollideCuboidCuboid, TranslatingBothBoxesMovesThePointsOnly)
 {
     const Vec3 shift(1000.0, 0.0, 0.0);

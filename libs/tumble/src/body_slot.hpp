@@ -17,6 +17,9 @@ struct CachedContactPoint {
     /// The other side: a body's slot index, or kPlaneSide + plane index, or kGroundSide.
     std::uint32_t other = 0;
     std::uint32_t id = 0;
+    /// Where the point was, in the owner's body frame, m: a point whose features changed name
+    /// without moving (a tie in the clipping) is found by it (11.6).
+    Vec3 localPosition{0.0};
     Real normalImpulse = 0.0;
     Vec3 frictionImpulse{0.0};
     Real tau = 0.0;

@@ -21,25 +21,37 @@ struct Polygon {
 };
 
 /// Side plane p of the reference face: the points x with dot(normal, x - centre) <= extent.
+/// A vertex within this share of the half-width of a side plane lies on it (9.7): incident
+/// corners on the reference face's edges up to rounding stay, and an edge along a side is not
+/// cut.
+constexpr Real kOnSidePlane = 1e-9;
+
 struct SidePlane {
     Vec3 normal{0.0};
     Real extent = 0.0;
 };
 
 /// One Sutherland-Hodgman pass (9.7): keeps the part of the convex polygon inside the plane.
-/// A vertex made on an edge (a, b) lies on the features a and b share, and on plane `index`.
+/// A vertex within kOnSidePlane of the plane lies on it: it stays, and no crossing is made next
+/// to it. A vertex made on an edge (a, b) lies on the features a and b share, and on plane
+/// `index`.
 Polygon clipByPlane(const Polygon& input, const SidePlane& plane, const Vec3& centre, int index)
 {
+    const Real onPlane = kOnSidePlane * plane.extent;
+    const auto distanceOf = [&](const ClipVertex& v) {
+        const Real distance = glm::dot(plane.normal, v.position - centre) - plane.extent;
+        return std::abs(distance) <= onPlane ? 0.0 : distance;
+    };
     Polygon output;
     for (int i = 0; i < input.count; ++i) {
         const ClipVertex& a = input.vertices[i];
         const ClipVertex& b = input.vertices[(i + 1) % input.count];
-        const Real distanceA = glm::dot(plane.normal, a.position - centre) - plane.extent;
-        const Real distanceB = glm::dot(plane.normal, b.position - centre) - plane.extent;
+        const Real distanceA = distanceOf(a);
+        const Real distanceB = distanceOf(b);
         if (distanceA <= 0.0) {
             output.vertices[output.count++] = a;
         }
-        if ((distanceA <= 0.0) != (distanceB <= 0.0)) {
+        if ((distanceA < 0.0 && distanceB > 0.0) || (distanceA > 0.0 && distanceB < 0.0)) {
             // The signs differ, so distanceA - distanceB is not zero.
             const Real t = distanceA / (distanceA - distanceB);
             ClipVertex& crossing = output.vertices[output.count++];

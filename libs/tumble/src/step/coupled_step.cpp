@@ -23,9 +23,10 @@ constexpr Real kImpactSpeed = 1e-3;
 constexpr int kMaxSubsteps = 16;
 /// Re-solves of one sub-step cut at an arrival (11.8).
 constexpr int kMaxArrivalCuts = 4;
-/// Convergence of the sweeps (5.10): impacts to rounding, resting contact as for a body alone.
+/// Convergence of the sweeps (5.10): impacts to rounding, resting contact tighter than for a body
+/// alone, since what is left undone stays in the velocities of a whole stack (11.5).
 constexpr Real kImpactConvergence = 1e-13;
-constexpr Real kRestingConvergence = 1e-8;
+constexpr Real kRestingConvergence = 1e-12;
 
 /// (8.4): the island's total work of the normal and of the friction impulses, shared among its
 /// bodies in proportion to their kinetic energy before the stage (their mass when all are at

@@ -18,6 +18,73 @@ namespace {
 constexpr Real kPushOutFraction = 0.2;
 constexpr int kPushOutSweeps = 32;
 constexpr Real kPushOutConvergence = 1e-6;
+/// (11.6): how far, in contact tolerances, a point may be from a cached point of its pair whose
+/// features had another name and still take its impulses.
+constexpr Real kWarmStartReach = 10.0;
+} // namespace
+
+namespace {
+
+/// The point of `point`'s position in the frame of the body `owner`.
+Vec3 inBodyFrame(const Body& owner, const Vec3& point)
+{
+    return glm::conjugate(owner.orientation) * (point - owner.position);
+}
+
+/// The unused entry of the owner's cache for the same pair and feature id, or cache.size().
+std::size_t matchById(const std::vector<CachedContactPoint>& cache, std::vector<bool>& used,
+                      std::uint32_t other, std::uint32_t id)
+{
+    for (std::size_t e = 0; e < cache.size(); ++e) {
+        if (!used[e] && cache[e].other == other && cache[e].id == id) {
+            used[e] = true;
+            return e;
+        }
+    }
+    return cache.size();
+}
+
+/// The nearest unused entry of the same pair within `reach` of `local`, or cache.size(): the
+/// point whose features changed name without moving (a tie in the clipping) (11.6).
+std::size_t matchByPosition(const std::vector<CachedContactPoint>& cache, std::vector<bool>& used,
+                            std::uint32_t other, const Vec3& local, Real reach)
+{
+    std::size_t best = cache.size();
+    Real bestDistance = reach * reach;
+    for (std::size_t e = 0; e < cache.size(); ++e) {
+        const Real distance = lengthSquared(cache[e].localPosition - local);
+        if (!used[e] && cache[e].other == other && distance <= bestDistance) {
+            best = e;
+            bestDistance = distance;
+        }
+    }
+    if (best < cache.size()) {
+        used[best] = true;
+    }
+    return best;
+}
+
+/// Sets a constraint's impulses from a cached point's, scaled down to a shorter sub-step and
+/// clamped to the cone.
+void startFrom(ContactConstraint& c, const CachedContactPoint& cached, Real tau)
+{
+    // scaled down to a shorter sub-step, never up: a short sub-step's impulse is mostly the
+    // stopping of an approach, not a force that lasts (11.6)
+    const Real shorter = std::min(1.0, tau / cached.tau);
+    c.normalImpulse = shorter * cached.normalImpulse;
+    const Vec3 friction = shorter * cached.frictionImpulse;
+    c.tangentImpulse1 = glm::dot(c.tangent1, friction);
+    c.tangentImpulse2 = glm::dot(c.tangent2, friction);
+    const Real bound = c.friction * c.normalImpulse;
+    const Real magnitude =
+        std::sqrt(c.tangentImpulse1 * c.tangentImpulse1 + c.tangentImpulse2 * c.tangentImpulse2);
+    if (magnitude > bound) {
+        const Real scale = magnitude > 0.0 ? bound / magnitude : 0.0;
+        c.tangentImpulse1 *= scale;
+        c.tangentImpulse2 *= scale;
+    }
+}
+
 } // namespace
 
 void loadWarmStart(const CoupledIsland& island, std::span<const BodySlot> slots,
@@ -28,38 +95,34 @@ void loadWarmStart(const CoupledIsland& island, std::span<const BodySlot> slots,
     // points in contact with nothing to start from get the carried weight (11.13)
     std::vector<std::uint8_t> guess(constraints.size(), 0);
     bool anyGuess = false;
+    std::vector<bool> used;
+    const Real reach = kWarmStartReach * settings.contactTolerance;
     for (const IslandContact& contact : contacts) {
-        const std::vector<CachedContactPoint>& cache = slots[island.bodies[contact.owner]].contactCache;
+        const BodySlot& owner = slots[island.bodies[contact.owner]];
+        const std::vector<CachedContactPoint>& cache = owner.contactCache;
+        used.assign(cache.size(), false);
+        // the same features first, so a point found by position never takes another's entry
+        std::array<std::size_t, 4> match{};
         for (int k = 0; k < contact.manifold.pointCount; ++k) {
+            match[k] = matchById(cache, used, contact.ownerKey, contact.manifold.points[k].id);
+        }
+        for (int k = 0; k < contact.manifold.pointCount; ++k) {
+            const PairContactPoint& point = contact.manifold.points[k];
             ContactConstraint& c = constraints[contact.firstConstraint + k];
             c.normalImpulse = 0.0;
             c.tangentImpulse1 = 0.0;
             c.tangentImpulse2 = 0.0;
-            const std::uint32_t id = contact.manifold.points[k].id;
-            const auto found = std::find_if(cache.begin(), cache.end(), [&](const auto& entry) {
-                return entry.other == contact.ownerKey && entry.id == id;
-            });
-            if (found == cache.end()) {
+            if (match[k] == cache.size()) {
+                match[k] = matchByPosition(cache, used, contact.ownerKey,
+                                           inBodyFrame(owner.body, point.position), reach);
+            }
+            if (match[k] == cache.size()) {
                 const bool touching = c.separation <= settings.contactTolerance;
                 guess[contact.firstConstraint + static_cast<std::uint32_t>(k)] = touching;
                 anyGuess = anyGuess || touching;
                 continue;
             }
-            // scaled down to a shorter sub-step, never up: a short sub-step's impulse is mostly
-            // the stopping of an approach, not a force that lasts (11.6)
-            const Real shorter = std::min(1.0, tau / found->tau);
-            c.normalImpulse = shorter * found->normalImpulse;
-            const Vec3 friction = shorter * found->frictionImpulse;
-            c.tangentImpulse1 = glm::dot(c.tangent1, friction);
-            c.tangentImpulse2 = glm::dot(c.tangent2, friction);
-            const Real bound = c.friction * c.normalImpulse;
-            const Real magnitude = std::sqrt(c.tangentImpulse1 * c.tangentImpulse1 +
-                                             c.tangentImpulse2 * c.tangentImpulse2);
-            if (magnitude > bound) {
-                const Real scale = magnitude > 0.0 ? bound / magnitude : 0.0;
-                c.tangentImpulse1 *= scale;
-                c.tangentImpulse2 *= scale;
-            }
+            startFrom(c, cache[match[k]], tau);
         }
     }
     if (anyGuess) {
@@ -75,15 +138,17 @@ void storeWarmStart(const CoupledIsland& island, std::span<BodySlot> slots,
         slots[slot].contactCache.clear();
     }
     for (const IslandContact& contact : contacts) {
-        std::vector<CachedContactPoint>& cache = slots[island.bodies[contact.owner]].contactCache;
+        BodySlot& owner = slots[island.bodies[contact.owner]];
         for (int k = 0; k < contact.manifold.pointCount; ++k) {
             const ContactConstraint& c = constraints[contact.firstConstraint + k];
             if (c.normalImpulse <= 0.0) {
                 continue;
             }
-            cache.push_back({contact.ownerKey, contact.manifold.points[k].id,
-                             c.normalImpulse,
-                             c.tangentImpulse1 * c.tangent1 + c.tangentImpulse2 * c.tangent2, tau});
+            const PairContactPoint& point = contact.manifold.points[k];
+            owner.contactCache.push_back(
+                {contact.ownerKey, point.id, inBodyFrame(owner.body, point.position),
+                 c.normalImpulse, c.tangentImpulse1 * c.tangent1 + c.tangentImpulse2 * c.tangent2,
+                 tau});
         }
     }
 }
