@@ -85,6 +85,7 @@ private:
     std::vector<SolverBody> m_bodies;
     std::vector<IslandContact> m_contacts;
     std::vector<ContactConstraint> m_constraints;
+    BodyConstraintLists m_constraintsOf;
     /// Each body's energy now, carried from stage to stage (8.3).
     std::vector<Real> m_energies;
     std::vector<Vec3> m_velocityStart;
@@ -276,12 +277,13 @@ void CoupledStep::finishSubstep(Real tau)
         kineticBefore[i] = body(i).kineticEnergy();
     }
     const std::vector<ContactWork> work = shareIslandWork(m_bodies, kineticBefore);
+    m_constraintsOf.build(m_constraints, count);
     for (std::size_t i = 0; i < count; ++i) {
         Body& b = body(i);
         b.linearVelocity = m_bodies[i].linearVelocity;
         b.angularVelocity = m_bodies[i].angularVelocity;
-        integrateIslandBody(b, m_velocityStart[i], m_constraints, m_contacts,
-                            static_cast<std::uint32_t>(i), tau, m_settings.integrator);
+        integrateIslandBody(b, m_velocityStart[i], m_constraints, m_constraintsOf.of(i), tau,
+                            m_settings.integrator);
         const Real energyAfter = energyOf(b, m_settings.gravity);
         bookContact(b, work[i],
                     energyAfter - m_energies[i], false);

@@ -153,17 +153,43 @@ void storeWarmStart(const CoupledIsland& island, std::span<BodySlot> slots,
     }
 }
 
+void BodyConstraintLists::build(std::span<const ContactConstraint> constraints,
+                                std::size_t bodyCount)
+{
+    // counting sort by body: each constraint is listed under each dynamic body it touches
+    starts.assign(bodyCount + 2, 0);
+    for (const ContactConstraint& c : constraints) {
+        for (const std::uint32_t body : {c.bodyA, c.bodyB}) {
+            if (body < bodyCount) {
+                ++starts[body + 2];
+            }
+        }
+    }
+    for (std::size_t i = 2; i < starts.size(); ++i) {
+        starts[i] += starts[i - 1];
+    }
+    indices.resize(starts.back());
+    for (std::uint32_t index = 0; index < constraints.size(); ++index) {
+        for (const std::uint32_t body : {constraints[index].bodyA, constraints[index].bodyB}) {
+            if (body < bodyCount) {
+                indices[starts[body + 1]++] = index;
+            }
+        }
+    }
+    starts.pop_back();
+}
+
 void integrateIslandBody(Body& body, const Vec3& velocityStart,
                          std::span<const ContactConstraint> constraints,
-                         std::span<const IslandContact> contacts, std::uint32_t local, Real tau,
+                         std::span<const std::uint32_t> bodyConstraints, Real tau,
                          Integrator integrator)
 {
-    (void)contacts;
     // an orthonormal basis of the normals that pushed on the body (Gram-Schmidt, at most 3)
     std::array<Vec3, 3> basis{};
     int dimension = 0;
-    for (const ContactConstraint& c : constraints) {
-        if (dimension == 3 || c.normalImpulse <= 0.0 || (c.bodyA != local && c.bodyB != local)) {
+    for (const std::uint32_t index : bodyConstraints) {
+        const ContactConstraint& c = constraints[index];
+        if (dimension == 3 || c.normalImpulse <= 0.0) {
             continue;
         }
         Vec3 direction = c.normal;

@@ -8,6 +8,7 @@
 #include "step/island_contacts.hpp"
 
 #include <span>
+#include <vector>
 
 namespace tumble {
 
@@ -24,12 +25,26 @@ void storeWarmStart(const CoupledIsland& island, std::span<BodySlot> slots,
                     std::span<const IslandContact> contacts,
                     std::span<const ContactConstraint> constraints, Real tau);
 
+/// The constraints of each body of an island, in order: body i's are
+/// indices[starts[i]] .. indices[starts[i + 1]] (the static solver body has none).
+struct BodyConstraintLists {
+    std::vector<std::uint32_t> starts;
+    std::vector<std::uint32_t> indices;
+
+    void build(std::span<const ContactConstraint> constraints, std::size_t bodyCount);
+    [[nodiscard]] std::span<const std::uint32_t> of(std::size_t body) const
+    {
+        return {indices.data() + starts[body], indices.data() + starts[body + 1]};
+    }
+};
+
 /// (11.9): the body's translation and rotation over tau. The centre moves with the mean of the
 /// start and end velocities (2.2), except along the normals of the points that pushed on it,
 /// where it moves with the end velocity they allowed (the rule (2.2a) of a body alone).
+/// `bodyConstraints` are the indices of the body's constraints, in order.
 void integrateIslandBody(Body& body, const Vec3& velocityStart,
                          std::span<const ContactConstraint> constraints,
-                         std::span<const IslandContact> contacts, std::uint32_t local, Real tau,
+                         std::span<const std::uint32_t> bodyConstraints, Real tau,
                          Integrator integrator);
 
 /// (11.10): points predicted to end the sub-step deeper than the contact tolerance are pushed
