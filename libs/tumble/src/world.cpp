@@ -324,7 +324,9 @@ void World::mergeEvents(const detail::StepScratch& scratch)
     m_collisions.clear();
     m_restEvents.clear();
     m_contactRecords.clear();
+    m_solverStatistics = {};
     const auto append = [&](const StepEvents& events) {
+        m_solverStatistics += events.statistics;
         m_collisions.insert(m_collisions.end(), events.collisions.begin(), events.collisions.end());
         m_restEvents.insert(m_restEvents.end(), events.restEvents.begin(), events.restEvents.end());
         m_contactRecords.insert(m_contactRecords.end(), events.contactRecords.begin(),

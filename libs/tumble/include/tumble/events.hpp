@@ -5,6 +5,8 @@
 #include "tumble/math.hpp"
 #include "tumble/shape.hpp"
 
+#include <cstddef>
+
 namespace tumble {
 
 /// A body that has just come to rest.
@@ -14,6 +16,31 @@ struct RestEvent {
     Real time = 0.0;
     /// The face lying on the ground.
     CuboidFace faceDown = CuboidFace::MinusY;
+};
+
+/// What the island solver did in one step, summed over the islands of touching bodies (bodies
+/// alone on the exact path are not counted): where the time of a scene goes.
+struct SolverStatistics {
+    /// Islands solved together, and the bodies in them.
+    std::size_t islands = 0;
+    std::size_t bodies = 0;
+    /// Contact points of the first sub-step of each island (speculative ones included).
+    std::size_t contactPoints = 0;
+    /// Sub-steps, Gauss-Seidel solves (impacts, sub-steps, re-solves after a cut) and sweeps.
+    std::size_t substeps = 0;
+    std::size_t solves = 0;
+    std::size_t sweeps = 0;
+
+    SolverStatistics& operator+=(const SolverStatistics& other)
+    {
+        islands += other.islands;
+        bodies += other.bodies;
+        contactPoints += other.contactPoints;
+        substeps += other.substeps;
+        solves += other.solves;
+        sweeps += other.sweeps;
+        return *this;
+    }
 };
 
 } // namespace tumble

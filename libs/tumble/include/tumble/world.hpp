@@ -106,6 +106,8 @@ public:
     [[nodiscard]] std::span<const RestEvent> restEvents() const { return m_restEvents; }
     /// Every contact solve of the last step, when WorldSettings::recordContacts is set.
     [[nodiscard]] std::span<const ContactRecord> contactRecords() const { return m_contactRecords; }
+    /// What the island solver did in the last step.
+    [[nodiscard]] const SolverStatistics& solverStatistics() const { return m_solverStatistics; }
     /// Kinetic plus potential energy of a body, J.
     [[nodiscard]] Real energyOf(const Body& body) const
     {
@@ -137,6 +139,7 @@ private:
     std::vector<CollisionEvent> m_collisions;
     std::vector<RestEvent> m_restEvents;
     std::vector<ContactRecord> m_contactRecords;
+    SolverStatistics m_solverStatistics;
     /// One per batch of kBatchSize slots.
     std::vector<StepEvents> m_batchEvents;
     detail::StepScratchHandle m_scratch;

@@ -76,6 +76,11 @@ private:
     [[nodiscard]] Real earliestArrival(Real tau) const;
     void finishSubstep(Real tau);
     Body& body(std::size_t local) { return m_slots[m_island.bodies[local]].body; }
+    void countSolve(int sweeps)
+    {
+        ++m_events.statistics.solves;
+        m_events.statistics.sweeps += static_cast<std::size_t>(sweeps);
+    }
 
     const CoupledIsland& m_island;
     std::span<BodySlot> m_slots;
@@ -111,11 +116,17 @@ void CoupledStep::run(Real dt)
     for (std::size_t i = 0; i < count; ++i) {
         m_energies[i] = energyOf(body(i), m_settings.gravity);
     }
+    ++m_events.statistics.islands;
+    m_events.statistics.bodies += count;
     for (int substep = 0;; ++substep) {
         const Real remaining = dt - m_elapsed;
         // narrow phase: every point within reach of the rest of the step
         findIslandContacts(m_island, m_slots, m_context, remaining, m_contacts);
         buildConstraints(m_contacts, m_slots, m_island, m_constraints);
+        ++m_events.statistics.substeps;
+        if (substep == 0) {
+            m_events.statistics.contactPoints += m_constraints.size();
+        }
         // impacts of the points in contact now, all together (11.4)
         resolveImpacts(m_context.time + m_elapsed);
         // velocities over the rest of the step, shortened to the next impact (11.8)
@@ -164,7 +175,8 @@ void CoupledStep::resolveImpacts(Real time)
     // (11.4a) Poisson's restitution: compression until no point approaches, each point's
     // restitution share e lambda_c of its compression impulse, and a plastic pass over any point
     // that share left approaching
-    solveConstraints(impact, m_bodies, m_settings.solverIterations, kImpactConvergence);
+    countSolve(
+        solveConstraints(impact, m_bodies, m_settings.solverIterations, kImpactConvergence));
     applyRestitution(impact, m_bodies);
     std::vector<ContactConstraint> correction = impact;
     for (ContactConstraint& c : correction) {
@@ -173,7 +185,8 @@ void CoupledStep::resolveImpacts(Real time)
         c.tangentImpulse2 = 0.0;
         c.frictionShift = 0.0;
     }
-    solveConstraints(correction, m_bodies, m_settings.solverIterations, kImpactConvergence);
+    countSolve(
+        solveConstraints(correction, m_bodies, m_settings.solverIterations, kImpactConvergence));
     for (std::size_t k = 0; k < impact.size(); ++k) {
         impact[k].normalImpulse += correction[k].normalImpulse;
         impact[k].tangentImpulse1 += correction[k].tangentImpulse1;
@@ -237,7 +250,8 @@ void CoupledStep::solveSubstep(Real tau)
     }
     loadWarmStart(m_island, m_slots, m_contacts, m_constraints, tau, m_settings);
     warmStart(m_constraints, m_bodies);
-    solveConstraints(m_constraints, m_bodies, m_settings.solverIterations, kRestingConvergence);
+    countSolve(solveConstraints(m_constraints, m_bodies, m_settings.solverIterations,
+                                kRestingConvergence));
 }
 
 Real CoupledStep::earliestArrival(Real tau) const

@@ -92,7 +92,8 @@ void loadWarmStart(const CoupledIsland& island, std::span<const BodySlot> slots,
                    std::span<ContactConstraint> constraints, Real tau,
                    const WorldSettings& settings)
 {
-    // points in contact with nothing to start from get the carried weight (11.13)
+    // the points in contact of a contact new to the island get the carried weight (11.13); a
+    // point new to a contact that goes on starts from nothing, as its neighbours carry the load
     std::vector<std::uint8_t> guess(constraints.size(), 0);
     bool anyGuess = false;
     std::vector<bool> used;
@@ -106,23 +107,26 @@ void loadWarmStart(const CoupledIsland& island, std::span<const BodySlot> slots,
         for (int k = 0; k < contact.manifold.pointCount; ++k) {
             match[k] = matchById(cache, used, contact.ownerKey, contact.manifold.points[k].id);
         }
+        bool goesOn = false;
         for (int k = 0; k < contact.manifold.pointCount; ++k) {
-            const PairContactPoint& point = contact.manifold.points[k];
+            if (match[k] == cache.size()) {
+                match[k] = matchByPosition(cache, used, contact.ownerKey,
+                                           inBodyFrame(owner.body, contact.manifold.points[k].position),
+                                           reach);
+            }
+            goesOn = goesOn || match[k] < cache.size();
+        }
+        for (int k = 0; k < contact.manifold.pointCount; ++k) {
             ContactConstraint& c = constraints[contact.firstConstraint + k];
             c.normalImpulse = 0.0;
             c.tangentImpulse1 = 0.0;
             c.tangentImpulse2 = 0.0;
-            if (match[k] == cache.size()) {
-                match[k] = matchByPosition(cache, used, contact.ownerKey,
-                                           inBodyFrame(owner.body, point.position), reach);
+            if (match[k] < cache.size()) {
+                startFrom(c, cache[match[k]], tau);
+            } else if (!goesOn && c.separation <= settings.contactTolerance) {
+                guess[contact.firstConstraint + static_cast<std::uint32_t>(k)] = 1;
+                anyGuess = true;
             }
-            if (match[k] == cache.size()) {
-                const bool touching = c.separation <= settings.contactTolerance;
-                guess[contact.firstConstraint + static_cast<std::uint32_t>(k)] = touching;
-                anyGuess = anyGuess || touching;
-                continue;
-            }
-            startFrom(c, cache[match[k]], tau);
         }
     }
     if (anyGuess) {

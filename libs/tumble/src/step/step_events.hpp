@@ -13,9 +13,11 @@ struct StepEvents {
     std::vector<CollisionEvent> collisions;
     std::vector<RestEvent> restEvents;
     std::vector<ContactRecord> contactRecords;
+    SolverStatistics statistics;
 
     void clear()
     {
+        statistics = {};
         collisions.clear();
         restEvents.clear();
         contactRecords.clear();
