@@ -30,30 +30,9 @@ std::string describe(const BodyHandle& handle)
     return text.str();
 }
 
-} // namespace
-
-void bindBody(py::module_& module)
+/// The state a user may set: pose, velocities, mass and material.
+void bindWritableState(py::class_<BodyHandle>& body)
 {
-    py::class_<BodyHandle> body(module, "Body", R"doc(
-Handle of a body in a tumble.World (from World.add_body or World.bodies). Reading or writing a
-property of a removed body raises tumble.StaleBodyError. Vectors are NumPy arrays in world axes;
-setting a property goes through the world, which keeps the derived quantities consistent.
-)doc");
-    body.def_property_readonly("name", &BodyHandle::name, "The body's name.");
-    body.def_property_readonly("index", &BodyHandle::serial,
-                               "Creation order in its world: the `body` column of World.run.");
-    body.def_property_readonly("alive", &BodyHandle::alive,
-                               "False once the body was removed from its world.");
-    body.def_property_readonly(
-        "world", [](const BodyHandle& h) { return h.sharedState(); }, "The tumble.World it is in.");
-    body.def("__repr__", &describe);
-    body.def("__eq__", [](const BodyHandle& a, const BodyHandle& b) {
-        return &a.state() == &b.state() && a.serial() == b.serial();
-    });
-    body.def("__hash__", [](const BodyHandle& h) {
-        return std::hash<const void*>()(&h.state()) ^ std::hash<std::size_t>()(h.serial());
-    });
-
     body.def_property(
         "position", [](const BodyHandle& h) { return toArray(h.body().position); },
         [](const BodyHandle& h, const Triple& p) {
@@ -69,13 +48,15 @@ setting a property goes through the world, which keeps the derived quantities co
     body.def_property(
         "velocity", [](const BodyHandle& h) { return toArray(h.body().linearVelocity); },
         [](const BodyHandle& h, const Triple& v) {
-            h.state().world.setLinearVelocity(h.dynamicId("a velocity"), finiteVec3(v, "velocity"));
+            h.state().world.setLinearVelocity(h.dynamicId("a velocity"),
+                                              finiteVec3(v, "velocity"));
         },
         "Velocity of the centre of mass, m/s.");
     body.def_property(
         "angular_velocity", [](const BodyHandle& h) { return toArray(h.body().angularVelocity); },
         [](const BodyHandle& h, const Triple& w) {
-            h.state().world.setAngularVelocity(h.dynamicId("an angular velocity"), finiteVec3(w, "angular_velocity"));
+            h.state().world.setAngularVelocity(h.dynamicId("an angular velocity"),
+                                               finiteVec3(w, "angular_velocity"));
         },
         "Angular velocity, rad/s.");
     body.def_property(
@@ -105,13 +86,18 @@ setting a property goes through the world, which keeps the derived quantities co
             h.state().world.setMaterial(h.id(), material);
         },
         "Kinetic Coulomb friction coefficient.");
+}
 
+/// What follows from the state: size, inertia, energies, momenta, the face down.
+void bindDerivedState(py::class_<BodyHandle>& body)
+{
     readOnly(body, "motion", [](const Body& b) { return b.isStatic() ? "static" : "dynamic"; },
              "\"dynamic\" or \"static\".");
     readOnly(body, "size", [](const Body& b) { return toArray(b.shape.size); },
              "Full extents (width, height, depth), m.");
     readOnly(body, "inverse_mass", [](const Body& b) { return b.invMass; }, "1 / mass, 1/kg.");
-    readOnly(body, "inverse_inertia_world", [](const Body& b) { return toArray(b.invInertiaWorld); },
+    readOnly(body, "inverse_inertia_world",
+             [](const Body& b) { return toArray(b.invInertiaWorld); },
              "World-frame inverse inertia R I0^-1 R^T, a 3 x 3 ndarray, 1/(kg m^2).");
     readOnly(body, "inertia_world", [](const Body& b) { return toArray(b.inertiaWorld()); },
              "World-frame inertia R I0 R^T, a 3 x 3 ndarray, kg m^2.");
@@ -123,16 +109,48 @@ setting a property goes through the world, which keeps the derived quantities co
              "I w about the centre of mass, N m s.");
     readOnly(body, "asleep", [](const Body& b) { return b.asleep; },
              "True while the body sleeps at rest.");
-    readOnly(body, "face_down",
-             [](const Body& b) { return faceName(faceAlong(b.orientation, Vec3(0.0, -1.0, 0.0))); },
-             "The face pointing most nearly down: \"+x\", \"-x\", \"+y\", \"-y\", \"+z\" or \"-z\".");
+    const auto faceDown = [](const Body& b) {
+        return faceName(faceAlong(b.orientation, Vec3(0.0, -1.0, 0.0)));
+    };
+    readOnly(body, "face_down", faceDown,
+             "The face pointing most nearly down: \"+x\", \"-x\", \"+y\", \"-y\", \"+z\" or "
+             "\"-z\".");
     body.def_property_readonly(
         "potential_energy",
-        [](const BodyHandle& h) { return h.body().potentialEnergy(h.state().world.settings().gravity); },
+        [](const BodyHandle& h) {
+            return h.body().potentialEnergy(h.state().world.settings().gravity);
+        },
         "-m g . x, J (zero at the origin).");
     body.def_property_readonly(
         "energy", [](const BodyHandle& h) { return h.state().world.energyOf(h.body()); },
         "Kinetic plus potential energy, J.");
+}
+
+} // namespace
+
+void bindBody(py::module_& module)
+{
+    py::class_<BodyHandle> body(module, "Body", R"doc(
+Handle of a body in a tumble.World (from World.add_body or World.bodies). Reading or writing a
+property of a removed body raises tumble.StaleBodyError. Vectors are NumPy arrays in world axes;
+setting a property goes through the world, which keeps the derived quantities consistent.
+)doc");
+    body.def_property_readonly("name", &BodyHandle::name, "The body's name.");
+    body.def_property_readonly("index", &BodyHandle::serial,
+                               "Creation order in its world: the `body` column of World.run.");
+    body.def_property_readonly("alive", &BodyHandle::alive,
+                               "False once the body was removed from its world.");
+    body.def_property_readonly(
+        "world", [](const BodyHandle& h) { return h.sharedState(); }, "The tumble.World it is in.");
+    body.def("__repr__", &describe);
+    body.def("__eq__", [](const BodyHandle& a, const BodyHandle& b) {
+        return &a.state() == &b.state() && a.serial() == b.serial();
+    });
+    body.def("__hash__", [](const BodyHandle& h) {
+        return std::hash<const void*>()(&h.state()) ^ std::hash<std::size_t>()(h.serial());
+    });
+    bindWritableState(body);
+    bindDerivedState(body);
 }
 
 } // namespace tumble::python

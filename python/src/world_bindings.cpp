@@ -128,37 +128,9 @@ BodyHandle addBody(const std::shared_ptr<WorldState>& state, const Triple& size,
     return BodyHandle(state, state->adopt(world.createBody(def), std::move(bodyName)));
 }
 
-} // namespace
-
-WorldClass bindWorld(py::module_& module)
+/// add_ground, add_plane, add_body, remove_body, apply_impulse and bodies.
+void bindWorldContents(WorldClass& world)
 {
-    WorldClass world(module, "World", R"doc(
-A world of rigid cuboids over an optional ground plane, stepped with a fixed time step.
-
-    world = tumble.World(gravity=(0, -9.81, 0))
-    world.add_ground(height=0.0)
-    rb = world.add_body(size=(2, 6, 2), mass=2.0, position=(0, 5, 0))
-    traj = world.run(duration=10.0, dt=1/240)
-
-Units are SI (m, kg, s, rad); y is up. Bodies are reached through the handles add_body returns
-(tumble.Body); a handle whose body was removed raises tumble.StaleBodyError.
-)doc");
-    world.def(py::init(&makeWorld), py::arg("gravity") = Triple{0.0, -9.81, 0.0},
-              py::arg("integrator") = "exact", py::arg("response") = "sequential",
-              py::arg("threads") = 1, py::arg("allow_sleep") = true, R"doc(
-gravity: acceleration, m/s^2.
-integrator: "exact" (angular momentum conserved exactly) or "handout" (R += dt [w]x R).
-response: "sequential" (impulses per contact point) or "average" (the handouts' single impulse).
-threads: threads a step spreads the bodies over (0: one per core); results do not depend on it.
-allow_sleep: whether a body at rest is put to sleep (velocities zeroed until woken).
-)doc");
-    world.def_property(
-        "gravity", [](WorldState& s) { return toArray(s.checked().settings().gravity); },
-        [](WorldState& s, const Triple& g) { s.checked().setGravity(finiteVec3(g, "gravity")); },
-        "Gravitational acceleration, m/s^2 (an ndarray of 3).");
-    world.def_property_readonly(
-        "time", [](WorldState& s) { return s.checked().time(); },
-        "Simulated time, s: the sum of every step's dt.");
     world.def(
         "add_ground",
         [](WorldState& s, double height, std::optional<double> elasticity,
@@ -210,7 +182,8 @@ motion: "dynamic" or "static" (fixed geometry: a wall, a tray; a static body giv
 elasticity or friction lends its contacts the dynamic body's). name: default "body<k>".
 )doc");
     world.def(
-        "remove_body", [](WorldState& s, const BodyHandle& body) { s.world.destroyBody(body.id()); },
+        "remove_body",
+        [](WorldState& s, const BodyHandle& body) { s.world.destroyBody(body.id()); },
         py::arg("body"), "Removes a body; its handles are stale afterwards.");
     world.def(
         "apply_impulse",
@@ -235,6 +208,40 @@ dv = J / m, dw = I^-1 (offset x J). Wakes the body.
             return bodies;
         },
         "Handles of the live bodies, in creation order.");
+}
+
+} // namespace
+
+WorldClass bindWorld(py::module_& module)
+{
+    WorldClass world(module, "World", R"doc(
+A world of rigid cuboids over an optional ground plane, stepped with a fixed time step.
+
+    world = tumble.World(gravity=(0, -9.81, 0))
+    world.add_ground(height=0.0)
+    rb = world.add_body(size=(2, 6, 2), mass=2.0, position=(0, 5, 0))
+    traj = world.run(duration=10.0, dt=1/240)
+
+Units are SI (m, kg, s, rad); y is up. Bodies are reached through the handles add_body returns
+(tumble.Body); a handle whose body was removed raises tumble.StaleBodyError.
+)doc");
+    world.def(py::init(&makeWorld), py::arg("gravity") = Triple{0.0, -9.81, 0.0},
+              py::arg("integrator") = "exact", py::arg("response") = "sequential",
+              py::arg("threads") = 1, py::arg("allow_sleep") = true, R"doc(
+gravity: acceleration, m/s^2.
+integrator: "exact" (angular momentum conserved exactly) or "handout" (R += dt [w]x R).
+response: "sequential" (impulses per contact point) or "average" (the handouts' single impulse).
+threads: threads a step spreads the bodies over (0: one per core); results do not depend on it.
+allow_sleep: whether a body at rest is put to sleep (velocities zeroed until woken).
+)doc");
+    world.def_property(
+        "gravity", [](WorldState& s) { return toArray(s.checked().settings().gravity); },
+        [](WorldState& s, const Triple& g) { s.checked().setGravity(finiteVec3(g, "gravity")); },
+        "Gravitational acceleration, m/s^2 (an ndarray of 3).");
+    world.def_property_readonly(
+        "time", [](WorldState& s) { return s.checked().time(); },
+        "Simulated time, s: the sum of every step's dt.");
+    bindWorldContents(world);
     return world;
 }
 
