@@ -29,6 +29,17 @@ packages=(
     libode-dev
     libmujoco-dev
     pkg-config
+    # the Python module (python/, docs/python.md): pybind11 over Debian's Python with NumPy;
+    # pytest runs tests/python, Matplotlib draws the examples' PNG files; pip with setuptools and
+    # wheel builds it for `python3 -m pip install --no-build-isolation .`
+    pybind11-dev
+    python3-dev
+    python3-numpy
+    python3-pytest
+    python3-matplotlib
+    python3-pip
+    python3-setuptools
+    python3-wheel
     # tumble plot and tumble validate --plot draw their PNG files with gnuplot
     gnuplot-nox
     # tumble throw: MPI (mpirun -n P tumble throw; its CLI test runs mpirun); Boost.Math's

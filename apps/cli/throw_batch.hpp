@@ -1,5 +1,5 @@
-// Running a block of throws on K threads (OpenMP, a fixed chunking) with an optional progress bar;
-// each throw depends only on (seed, index), so the outcomes do not depend on K.
+// `tumble throw`'s batches: the library's runThrowBatch (tumble/scenario/throw_batch.hpp) with
+// the CLI's signal handling (InterruptGuard) and progress bar on stderr.
 #pragma once
 
 #include "tumble/scenario/scenario.hpp"
@@ -10,11 +10,8 @@
 
 namespace tumble::cli {
 
-/// Throws handed to a thread at a time, in round robin: fixed, so the split does not depend on
-/// timing (the outcomes would not anyway).
-constexpr int kThrowsPerChunk = 16;
-
-/// Threads to use when --threads is not given: every core OpenMP sees (1 without OpenMP).
+/// Threads to use when --threads is not given: every core OpenMP sees (1 without OpenMP), at
+/// most kMaxThreads.
 int defaultThreadCount();
 /// Whether this build runs throws in parallel (OpenMP was found).
 bool parallelBuild();
