@@ -75,6 +75,27 @@ TEST(CliMessages, HelpAndVersionAndUnknownCommands)
     EXPECT_EQ(version.output.rfind("tumble ", 0), 0u) << version.output;
 }
 
+// item 17: an error in the value of --dt or --duration names that option, not --set
+TEST(CliMessages, TheShorthandsNameThemselvesInErrors)
+{
+    expectUsageError({"run", kFriction, "--dt", "abc"},
+                     "--dt: must be a number above 0, got 'abc'");
+    expectUsageError({"run", kFriction, "--dt", "10"},
+                     "--dt: must be between 1e-06 and 0.1 s, got 10");
+    expectUsageError({"run", kFriction, "--duration", "abc"},
+                     "--duration: must be a number above 0, got 'abc'");
+    expectUsageError({"run", kFriction, "--dt", "1e-6", "--duration", "1e5"},
+                     "--duration: the number of steps duration / dt must be at most");
+    // a value given with --set keeps naming --set
+    expectUsageError({"run", kFriction, "--set", "world.dt=abc"},
+                     "--set: world.dt: expected a number");
+    // a number the option takes is passed on as a number, whatever its spelling
+    const Result spelled =
+        runTumble({"run", kFriction, "--quiet", "--dt", ".05", "--duration", ".1"});
+    EXPECT_EQ(spelled.exitCode, 0) << spelled.output;
+    EXPECT_NE(spelled.output.find("dt = 0.05 s"), std::string::npos) << spelled.output;
+}
+
 } // namespace
 
 namespace {
