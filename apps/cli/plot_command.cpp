@@ -31,8 +31,9 @@ namespace {
 constexpr std::size_t kMostCurves = 12;
 
 /// Runs gnuplot without a shell (posix_spawnp with an argument vector), feeding it `script` on
-/// standard input, so no file name is ever parsed by a shell. Throws with the real reason.
-void runGnuplot(const std::string& script)
+/// standard input, so no file name is ever parsed by a shell; its standard output, where the
+/// image goes, is `image`. Throws with the real reason.
+void runGnuplot(const std::string& script, int image)
 {
     int pipeEnds[2];
     if (pipe(pipeEnds) != 0) {
@@ -41,6 +42,7 @@ void runGnuplot(const std::string& script)
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_adddup2(&actions, pipeEnds[0], STDIN_FILENO);
+    posix_spawn_file_actions_adddup2(&actions, image, STDOUT_FILENO);
     posix_spawn_file_actions_addclose(&actions, pipeEnds[0]);
     posix_spawn_file_actions_addclose(&actions, pipeEnds[1]);
     char program[] = "gnuplot";
@@ -218,8 +220,8 @@ struct Curve {
     std::string style;
 };
 
-std::string scriptFor(const std::filesystem::path& path, const std::filesystem::path& png,
-                      const std::string& body)
+/// The gnuplot script that plots the CSV at `path`; the image goes to standard output.
+std::string scriptFor(const std::filesystem::path& path, const std::string& body)
 {
     const TumbleCsv csv = readTumbleCsv(path);
     std::string kind;
@@ -262,7 +264,6 @@ std::string scriptFor(const std::filesystem::path& path, const std::filesystem::
 
     std::ostringstream script;
     script << "set terminal pngcairo size 1200,700 font 'sans,11'\n"
-           << "set output " << quoted(png.string()) << "\n"
            << "set termoption noenhanced\n"
            << "set datafile separator ','\nset key below maxcols 3\nset grid\n"
            << "set xlabel 'time (s)'\nset ylabel " << quoted(ylabel) << "\n";
@@ -307,14 +308,16 @@ void createDirectories(const std::string& directory)
     }
 }
 
-/// Fails with exit code 3 before gnuplot runs when the PNG cannot be written there.
-void checkWritable(const std::filesystem::path& png)
+/// Draws `script` with gnuplot into `png`, whole or not at all. The file is opened here first
+/// (as PNG.tmp, renamed when gnuplot succeeds), so an output that cannot be written is exit 3
+/// with the system's reason before gnuplot runs; gnuplot writes the image to its standard output,
+/// which is that file, so no PNG data ever reaches the terminal.
+void drawPng(const std::filesystem::path& png, const std::string& script)
 {
-    const std::filesystem::path folder =
-        png.parent_path().empty() ? std::filesystem::path(".") : png.parent_path();
-    if (access(folder.c_str(), W_OK) != 0) {
-        throw OutputError("cannot write " + png.string() + ": " + std::strerror(errno));
-    }
+    OutputFile image(png.string());
+    runGnuplot(script, fileno(image.handle()));
+    image.finish();
+    std::cout << "wrote " << png.string() << '\n';
 }
 
 } // namespace
@@ -344,10 +347,7 @@ int plotCommand(const PlotOptions& options)
             createDirectories(options.outputDirectory);
             png = std::filesystem::path(options.outputDirectory) / png.filename();
         }
-        const std::string script = scriptFor(csv, png, options.body);
-        checkWritable(png);
-        runGnuplot(script);
-        std::cout << "wrote " << png.string() << '\n';
+        drawPng(png, scriptFor(csv, options.body));
     }
     return kExitOk;
 }
@@ -359,7 +359,6 @@ void plotConvergence(const std::string& directory, const std::vector<Real>& step
     const std::filesystem::path png = std::filesystem::path(directory) / "convergence.png";
     std::ostringstream script;
     script << "set terminal pngcairo size 1200,800 font 'sans,11'\n"
-           << "set output " << quoted(png.string()) << "\n"
            << "set logscale xy\nset grid\nset key below maxcols 2\nset format y '1e%L'\n"
            << "set termoption noenhanced\nset xrange [*:0.02]\n"
            << "set xlabel 'dt (s)'\nset ylabel 'error'\n"
@@ -380,9 +379,7 @@ void plotConvergence(const std::string& directory, const std::vector<Real>& step
         }
         script << "e\n";
     }
-    checkWritable(png);
-    runGnuplot(script.str());
-    std::cout << "wrote " << png.string() << '\n';
+    drawPng(png, script.str());
 }
 
 } // namespace tumble::cli

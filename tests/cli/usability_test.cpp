@@ -249,6 +249,24 @@ TEST_F(CliPlot, AFailureGivesTheRealReason)
         << absent.output;
 }
 
+// item 17: an output plot cannot write is exit 3 with the system's reason on one line, before
+// gnuplot runs, and no image data reaches the terminal
+TEST_F(CliPlot, AnUnwritableOutputIsExitThreeWithTheReason)
+{
+    if (!fs::is_directory("/sys/kernel")) {
+        GTEST_SKIP() << "needs /sys/kernel, a folder where no file can be made, even by root";
+    }
+    writeImpulseCsv();
+    const Result result =
+        runTumble({"plot", (dir() / "imp.csv").string(), "--out", "/sys/kernel"}, Capture::Both);
+    EXPECT_EQ(result.exitCode, 3) << result.output;
+    EXPECT_EQ(lines(result.output).size(), 1u) << result.output;
+    EXPECT_EQ(result.output.rfind("tumble: error: cannot write /sys/kernel/imp.png", 0), 0u)
+        << result.output;
+    EXPECT_NE(result.output.find(": Permission denied"), std::string::npos) << result.output;
+    EXPECT_EQ(result.output.find("PNG"), std::string::npos) << result.output;
+}
+
 } // namespace
 
 namespace {
