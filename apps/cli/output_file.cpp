@@ -2,6 +2,9 @@
 
 #include "interrupt.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
@@ -10,12 +13,59 @@
 namespace tumble::cli {
 namespace {
 
-/// "cannot write PATH: REASON" from errno.
-OutputError writeError(const std::string& path)
+/// "cannot write PATH: REASON" from `error` (an errno value), or from errno.
+OutputError writeError(const std::string& path, int error = errno)
 {
-    const int error = errno;
     return OutputError("cannot write " + path + ": " +
                        (error != 0 ? std::strerror(error) : "write error"));
+}
+
+/// The stream's write function (fopencookie): writes all of `data` to the sink's descriptor and
+/// keeps the errno of the first failure, which a later fflush no longer knows.
+ssize_t writeToSink(void* cookie, const char* data, std::size_t size)
+{
+    auto* sink = static_cast<OutputFile::Sink*>(cookie);
+    std::size_t written = 0;
+    while (written < size) {
+        const ssize_t count = ::write(sink->descriptor, data + written, size - written);
+        if (count < 0 && errno == EINTR) {
+            continue;
+        }
+        if (count <= 0) {
+            sink->error = sink->error != 0 ? sink->error : (count < 0 ? errno : EIO);
+            // 0 is the cookie interface's error value
+            return static_cast<ssize_t>(written);
+        }
+        written += static_cast<std::size_t>(count);
+    }
+    return static_cast<ssize_t>(size);
+}
+
+int closeSink(void* cookie)
+{
+    auto* sink = static_cast<OutputFile::Sink*>(cookie);
+    if (::close(sink->descriptor) != 0) {
+        sink->error = sink->error != 0 ? sink->error : errno;
+        return -1;
+    }
+    return 0;
+}
+
+/// Opens `path` for writing (created or truncated, as fopen "wb") as a stream over `sink`.
+/// Returns null with errno set when it cannot be opened.
+std::FILE* openSink(const std::string& path, OutputFile::Sink& sink)
+{
+    sink.descriptor = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    if (sink.descriptor < 0) {
+        return nullptr;
+    }
+    std::FILE* file = fopencookie(&sink, "wb", {nullptr, writeToSink, nullptr, closeSink});
+    if (file == nullptr) {
+        const int error = errno;
+        ::close(sink.descriptor);
+        errno = error;
+    }
+    return file;
 }
 
 } // namespace
@@ -31,14 +81,14 @@ OutputFile::OutputFile(const std::string& path) : m_path(path), m_toStdout(path 
     const auto status = std::filesystem::status(path, ignored);
     if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
         m_direct = true;
-        m_file = std::fopen(path.c_str(), "wb");
+        m_file = openSink(path, m_sink);
         if (m_file == nullptr) {
             throw writeError(path);
         }
         return;
     }
     m_temporary = std::filesystem::path(path + ".tmp");
-    m_file = std::fopen(m_temporary.c_str(), "wb");
+    m_file = openSink(m_temporary.string(), m_sink);
     if (m_file == nullptr) {
         throw writeError(m_temporary.string());
     }
@@ -58,6 +108,11 @@ OutputFile::~OutputFile()
     }
 }
 
+int OutputFile::descriptor() const
+{
+    return m_toStdout ? STDOUT_FILENO : m_sink.descriptor;
+}
+
 void OutputFile::finish()
 {
     errno = 0;
@@ -68,18 +123,14 @@ void OutputFile::finish()
         return;
     }
     const bool flushFailed = std::fflush(m_file) != 0;
-    const int flushError = errno;
     const bool failed = flushFailed || std::ferror(m_file) != 0;
     const bool closeFailed = std::fclose(m_file) != 0;
     m_file = nullptr;
-    if (flushError != 0) {
-        errno = flushError;
-    }
     const std::string written = m_direct ? m_path : m_temporary.string();
     unregisterTemporaryFile(m_temporarySlot);
     m_temporarySlot = -1;
     if (failed || closeFailed) {
-        const OutputError problem = writeError(written);
+        const OutputError problem = writeError(written, m_sink.error);
         std::error_code ignored;
         if (!m_direct) {
             std::filesystem::remove(m_temporary, ignored);

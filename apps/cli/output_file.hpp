@@ -1,5 +1,6 @@
 // OutputFile: a file the CLI writes whole or not at all. It is written under PATH.tmp and renamed
-// to PATH by finish(); a run that fails or stops early removes the temporary file.
+// to PATH by finish(); a run that fails or stops early removes the temporary file. A write that
+// fails is reported with the system's reason, whenever it happened.
 #pragma once
 
 #include <cstdio>
@@ -17,6 +18,13 @@ public:
 
 class OutputFile {
 public:
+    /// The file under a stream (not for stdout): its descriptor and the errno of the first write
+    /// or close that failed, which stdio's error flag does not keep.
+    struct Sink {
+        int descriptor = -1;
+        int error = 0;
+    };
+
     /// "-" means stdout, and a path that exists but is not a regular file (/dev/stdout, a pipe)
     /// is written directly; any other path goes through PATH.tmp. Throws OutputError.
     explicit OutputFile(const std::string& path);
@@ -25,6 +33,8 @@ public:
     OutputFile& operator=(const OutputFile&) = delete;
 
     [[nodiscard]] std::FILE* handle() const { return m_file; }
+    /// The file descriptor the stream writes to, for a child process to write into.
+    [[nodiscard]] int descriptor() const;
     [[nodiscard]] bool toStdout() const { return m_toStdout; }
     /// Flushes, closes and renames the temporary file into place. Throws on a write error.
     void finish();
@@ -33,6 +43,7 @@ private:
     std::string m_path;
     std::filesystem::path m_temporary;
     std::FILE* m_file = nullptr;
+    Sink m_sink;
     bool m_toStdout = false;
     /// Written in place: stdout or a device, nothing to rename.
     bool m_direct = false;

@@ -315,7 +315,7 @@ void createDirectories(const std::string& directory)
 void drawPng(const std::filesystem::path& png, const std::string& script)
 {
     OutputFile image(png.string());
-    runGnuplot(script, fileno(image.handle()));
+    runGnuplot(script, image.descriptor());
     image.finish();
     std::cout << "wrote " << png.string() << '\n';
 }

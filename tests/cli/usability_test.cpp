@@ -373,6 +373,44 @@ namespace {
 
 using namespace tumble::cli_test;
 
+// item 17: a write that fails is reported with the system's reason, naming the file, in every
+// command, however early in the run it failed (validate writes its CSV in one piece)
+TEST(CliMessages, AFullDiskIsReportedWithTheSystemsReasonByEveryCommand)
+{
+    if (!fs::exists("/dev/full")) {
+        GTEST_SKIP() << "needs /dev/full";
+    }
+    const std::string reason = "tumble: error: cannot write /dev/full: No space left on device\n";
+    const std::vector<std::vector<std::string>> commands = {
+        {"run", kFriction, "--quiet", "--csv", "/dev/full"},
+        {"run", kFriction, "--quiet", "--energy-csv", "/dev/full"},
+        {"run", kFriction, "--quiet", "--contacts-csv", "/dev/full"},
+        {"throw", kDice, "--throws", "20", "--csv", "/dev/full"},
+        {"validate", "--no-study", "--csv", "/dev/full"}};
+    for (const std::vector<std::string>& command : commands) {
+        const Result result = runTumble(command, Capture::StderrOnly);
+        EXPECT_EQ(result.exitCode, 3) << command.front() << "\n" << result.output;
+        EXPECT_EQ(result.output, reason) << command.front() << " " << command.back();
+    }
+}
+
+// items 17 and 21: view's image is PNG only (exit 2 for another name) and is opened before any
+// window, so an output that cannot be written is exit 3 with the system's reason, as in run
+TEST_F(CliTest, ViewScreenshotIsAWritablePng)
+{
+    const std::string jpg = (dir() / "x.jpg").string();
+    expectUsageError({"view", "--screenshot", jpg},
+                     "--screenshot: the capture is a PNG image, so the file name must end in .png");
+    expectUsageError({"view", "--screenshot", "-"}, "--screenshot:");
+    EXPECT_FALSE(fs::exists(jpg));
+
+    const Result missing = runTumble({"view", "--screenshot", "/nonexistent/dir/x.png"},
+                                     Capture::StderrOnly);
+    EXPECT_EQ(missing.exitCode, 3) << missing.output;
+    EXPECT_EQ(missing.output, "tumble: error: cannot write /nonexistent/dir/x.png.tmp: "
+                              "No such file or directory\n");
+}
+
 // item 8: view --at has run's limits; the error comes before any window or capture
 TEST_F(CliTest, ViewAtIsCheckedLikeARunsDuration)
 {
