@@ -10,6 +10,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <array>
 #include <cerrno>
 #include <csignal>
 #include <cstring>
@@ -320,6 +321,20 @@ void drawPng(const std::filesystem::path& png, const std::string& script)
     std::cout << "wrote " << png.string() << '\n';
 }
 
+/// The look of convergence series `i`: its own colour and point type. gnuplot's default cycle
+/// repeats its colours after 8 series and the study has more; here a colour and a point type pair
+/// repeats only after 16 x 15 series, and the first 15 differ in both.
+std::string seriesStyle(std::size_t i)
+{
+    static constexpr std::array<const char*, 16> kColours{
+        "#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f",
+        "#bcbd22", "#17becf", "#000000", "#aec7e8", "#ffbb78", "#98df8a", "#ff9896", "#c5b0d5"};
+    // pngcairo's 15 distinct point shapes
+    constexpr std::size_t kPointTypes = 15;
+    return std::string("lc rgb '") + kColours[i % kColours.size()] + "' pt " +
+           std::to_string(1 + i % kPointTypes);
+}
+
 } // namespace
 
 CLI::App* addPlotCommand(CLI::App& app, PlotOptions& options)
@@ -364,14 +379,12 @@ void plotConvergence(const std::string& directory, const std::vector<Real>& step
            << "set xlabel 'dt (s)'\nset ylabel 'error'\n"
            << "set title 'tumble validate: error against time step'\n"
            << "plot ";
-    bool first = true;
-    for (const ConvergenceSeries& line : series) {
-        // Errors at rounding level are drawn at the floor so log axes can show them.
-        script << (first ? "" : ", ") << "'-' using 1:2 with linespoints lw 2 title "
-               << quoted(line.label);
-        first = false;
+    for (std::size_t i = 0; i < series.size(); ++i) {
+        script << (i == 0 ? "" : ", ") << "'-' using 1:2 with linespoints lw 2 "
+               << seriesStyle(i) << " title " << quoted(series[i].label);
     }
     script << "\n";
+    // errors at rounding level are drawn at the floor so log axes can show them
     for (const ConvergenceSeries& line : series) {
         for (std::size_t i = 0; i < steps.size() && i < line.errors.size(); ++i) {
             script << formatFull(steps[i]) << ' ' << formatFull(std::max(line.errors[i], 1e-16))

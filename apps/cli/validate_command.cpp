@@ -103,6 +103,11 @@ CLI::App* addValidateCommand(CLI::App& app, ValidateOptions& options)
 
 int validateCommand(const ValidateOptions& options)
 {
+    // the plot is of the convergence study, so it cannot go with the table alone
+    if (options.tableOnly && !options.plotDirectory.empty()) {
+        throw UsageError("--plot", "the plot draws the convergence study, which --no-study leaves "
+                                   "out; give one or the other");
+    }
     // the cases compare at whole seconds (free fall at t = 1 s, sliding for 3 s, ...): a step that
     // does not divide a second compared at a time it never simulated (issue 14, item 6)
     for (const Real dt : options.steps) {

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -247,6 +248,37 @@ TEST_F(CliPlot, AFailureGivesTheRealReason)
     EXPECT_EQ(absent.exitCode, 2);
     EXPECT_NE(absent.output.find("cannot open CSV: No such file or directory"), std::string::npos)
         << absent.output;
+}
+
+// item 21: validate --plot draws the study, so it is refused with --no-study instead of writing
+// nothing; each series of convergence.png has a colour and point type of its own
+TEST_F(CliPlot, ValidatePlotNeedsTheStudyAndGivesEachSeriesItsOwnLook)
+{
+    const fs::path plots = dir() / "plots";
+    expectUsageError({"validate", "--no-study", "--plot", plots.string()},
+                     "--plot: the plot draws the convergence study, which --no-study leaves out");
+    EXPECT_FALSE(fs::exists(plots));
+
+    const fs::path script = dir() / "script.gp";
+    writeFakeGnuplot(dir() / "bin", script, 0);
+    const Result result = runWithPath((dir() / "bin").string() + ":/usr/bin:/bin",
+                                      {"validate", "--plot", plots.string()});
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    const std::string text = readFile(script);
+    const std::string plot = text.substr(text.find("\nplot ") + 1);
+    const std::string clauses = plot.substr(0, plot.find('\n'));
+    std::set<std::string> looks;
+    std::size_t series = 0;
+    for (std::size_t at = clauses.find("'-' using"); at != std::string::npos;
+         at = clauses.find("'-' using", at + 1)) {
+        ++series;
+        const std::size_t colour = clauses.find("lc rgb '", at);
+        const std::size_t title = clauses.find(" title ", at);
+        ASSERT_LT(colour, title) << clauses;
+        looks.insert(clauses.substr(colour, title - colour));
+    }
+    EXPECT_GT(series, 8u) << "more series than gnuplot's default colours\n" << clauses;
+    EXPECT_EQ(looks.size(), series) << clauses;
 }
 
 // item 17: an output plot cannot write is exit 3 with the system's reason on one line, before
