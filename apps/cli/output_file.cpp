@@ -1,8 +1,8 @@
 #include "output_file.hpp"
 
 #include "interrupt.hpp"
+#include "standard_output.hpp"
 
-#include <fcntl.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -20,54 +20,6 @@ OutputError writeError(const std::string& path, int error = errno)
                        (error != 0 ? std::strerror(error) : "write error"));
 }
 
-/// The stream's write function (fopencookie): writes all of `data` to the sink's descriptor and
-/// keeps the errno of the first failure, which a later fflush no longer knows.
-ssize_t writeToSink(void* cookie, const char* data, std::size_t size)
-{
-    auto* sink = static_cast<OutputFile::Sink*>(cookie);
-    std::size_t written = 0;
-    while (written < size) {
-        const ssize_t count = ::write(sink->descriptor, data + written, size - written);
-        if (count < 0 && errno == EINTR) {
-            continue;
-        }
-        if (count <= 0) {
-            sink->error = sink->error != 0 ? sink->error : (count < 0 ? errno : EIO);
-            // 0 is the cookie interface's error value
-            return static_cast<ssize_t>(written);
-        }
-        written += static_cast<std::size_t>(count);
-    }
-    return static_cast<ssize_t>(size);
-}
-
-int closeSink(void* cookie)
-{
-    auto* sink = static_cast<OutputFile::Sink*>(cookie);
-    if (::close(sink->descriptor) != 0) {
-        sink->error = sink->error != 0 ? sink->error : errno;
-        return -1;
-    }
-    return 0;
-}
-
-/// Opens `path` for writing (created or truncated, as fopen "wb") as a stream over `sink`.
-/// Returns null with errno set when it cannot be opened.
-std::FILE* openSink(const std::string& path, OutputFile::Sink& sink)
-{
-    sink.descriptor = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-    if (sink.descriptor < 0) {
-        return nullptr;
-    }
-    std::FILE* file = fopencookie(&sink, "wb", {nullptr, writeToSink, nullptr, closeSink});
-    if (file == nullptr) {
-        const int error = errno;
-        ::close(sink.descriptor);
-        errno = error;
-    }
-    return file;
-}
-
 } // namespace
 
 OutputFile::OutputFile(const std::string& path) : m_path(path), m_toStdout(path == "-")
@@ -81,14 +33,14 @@ OutputFile::OutputFile(const std::string& path) : m_path(path), m_toStdout(path 
     const auto status = std::filesystem::status(path, ignored);
     if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
         m_direct = true;
-        m_file = openSink(path, m_sink);
+        m_file = openSinkStream(path, m_sink);
         if (m_file == nullptr) {
             throw writeError(path);
         }
         return;
     }
     m_temporary = std::filesystem::path(path + ".tmp");
-    m_file = openSink(m_temporary.string(), m_sink);
+    m_file = openSinkStream(m_temporary.string(), m_sink);
     if (m_file == nullptr) {
         throw writeError(m_temporary.string());
     }
@@ -118,7 +70,8 @@ void OutputFile::finish()
     errno = 0;
     if (m_toStdout) {
         if (std::fflush(stdout) != 0 || std::ferror(stdout) != 0) {
-            throw writeError("standard output");
+            throw writeError("standard output", standardOutputError() != 0 ? standardOutputError()
+                                                                            : errno);
         }
         return;
     }

@@ -3,6 +3,8 @@
 // fails is reported with the system's reason, whenever it happened.
 #pragma once
 
+#include "sink_stream.hpp"
+
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
@@ -18,12 +20,6 @@ public:
 
 class OutputFile {
 public:
-    /// The file under a stream (not for stdout): its descriptor and the errno of the first write
-    /// or close that failed, which stdio's error flag does not keep.
-    struct Sink {
-        int descriptor = -1;
-        int error = 0;
-    };
 
     /// "-" means stdout, and a path that exists but is not a regular file (/dev/stdout, a pipe)
     /// is written directly; any other path goes through PATH.tmp. Throws OutputError.
@@ -43,7 +39,8 @@ private:
     std::string m_path;
     std::filesystem::path m_temporary;
     std::FILE* m_file = nullptr;
-    Sink m_sink;
+    /// The file under m_file (not for stdout), keeping the reason of a failed write.
+    SinkStream m_sink;
     bool m_toStdout = false;
     /// Written in place: stdout or a device, nothing to rename.
     bool m_direct = false;

@@ -424,6 +424,23 @@ TEST(CliMessages, AFullDiskIsReportedWithTheSystemsReasonByEveryCommand)
         EXPECT_EQ(result.exitCode, 3) << command.front() << "\n" << result.output;
         EXPECT_EQ(result.output, reason) << command.front() << " " << command.back();
     }
+    // the console on a full disk: its lines are written (and fail) one at a time
+    const std::vector<std::string> consoles = {
+        quoted(TUMBLE_EXE) + " run " + quoted(kFriction),
+        quoted(TUMBLE_EXE) + " throw " + quoted(kDice) + " --throws 20",
+        quoted(TUMBLE_EXE) + " validate --no-study"};
+    for (const std::string& command : consoles) {
+        std::FILE* pipe = popen((command + " 2>&1 >/dev/full").c_str(), "r");
+        ASSERT_NE(pipe, nullptr);
+        std::string output;
+        for (int c = std::fgetc(pipe); c != EOF; c = std::fgetc(pipe)) {
+            output += static_cast<char>(c);
+        }
+        const int status = pclose(pipe);
+        EXPECT_EQ(WEXITSTATUS(status), 3) << command << "\n" << output;
+        EXPECT_EQ(output, "tumble: error: cannot write standard output: No space left on device\n")
+            << command;
+    }
 }
 
 // items 17 and 21: view's image is PNG only (exit 2 for another name) and is opened before any
