@@ -2,6 +2,7 @@
 
 #include "cli_options.hpp"
 #include "output_file.hpp"
+#include "standard_output.hpp"
 
 #include "tumble/scenario/scenario.hpp"
 #include "tumble/shape.hpp"
@@ -336,8 +337,8 @@ int runReportingErrors(const std::function<int()>& command)
         // Console output that could not be written (stdout on a full disk) is a failed run too.
         errno = 0;
         std::cout.flush();
-        if (!std::cout) {
-            const int error = errno;
+        if (!std::cout || std::ferror(stdout) != 0) {
+            const int error = standardOutputError() != 0 ? standardOutputError() : errno;
             printError(std::string("cannot write standard output: ") +
                        (error != 0 ? std::strerror(error) : "write error"));
             return code == kExitOk ? kExitWriteFailure : code;

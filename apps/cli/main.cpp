@@ -5,6 +5,7 @@
 #include "console.hpp"
 #include "plot_command.hpp"
 #include "run_command.hpp"
+#include "standard_output.hpp"
 #include "throw_command.hpp"
 #include "validate_command.hpp"
 #include "view_command.hpp"
@@ -50,9 +51,7 @@ int main(int argc, char** argv)
 
     // lines written stay written: a process ended by a signal loses what stdio still buffers,
     // so the console is line-buffered (not when `run --csv -` streams its CSV through stdout)
-    if (!(*run && runOptions.csvPath == "-")) {
-        std::setvbuf(stdout, nullptr, _IOLBF, 0);
-    }
+    tumble::cli::openStandardOutput(!(*run && runOptions.csvPath == "-"));
     return tumble::cli::runReportingErrors([&] {
         if (*run) {
             return tumble::cli::runCommand(runOptions);

@@ -1,6 +1,9 @@
 #include "output_file.hpp"
 
 #include "interrupt.hpp"
+#include "standard_output.hpp"
+
+#include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
@@ -10,10 +13,9 @@
 namespace tumble::cli {
 namespace {
 
-/// "cannot write PATH: REASON" from errno.
-OutputError writeError(const std::string& path)
+/// "cannot write PATH: REASON" from `error` (an errno value), or from errno.
+OutputError writeError(const std::string& path, int error = errno)
 {
-    const int error = errno;
     return OutputError("cannot write " + path + ": " +
                        (error != 0 ? std::strerror(error) : "write error"));
 }
@@ -31,14 +33,14 @@ OutputFile::OutputFile(const std::string& path) : m_path(path), m_toStdout(path 
     const auto status = std::filesystem::status(path, ignored);
     if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
         m_direct = true;
-        m_file = std::fopen(path.c_str(), "wb");
+        m_file = openSinkStream(path, m_sink);
         if (m_file == nullptr) {
             throw writeError(path);
         }
         return;
     }
     m_temporary = std::filesystem::path(path + ".tmp");
-    m_file = std::fopen(m_temporary.c_str(), "wb");
+    m_file = openSinkStream(m_temporary.string(), m_sink);
     if (m_file == nullptr) {
         throw writeError(m_temporary.string());
     }
@@ -58,28 +60,30 @@ OutputFile::~OutputFile()
     }
 }
 
+int OutputFile::descriptor() const
+{
+    return m_toStdout ? STDOUT_FILENO : m_sink.descriptor;
+}
+
 void OutputFile::finish()
 {
     errno = 0;
     if (m_toStdout) {
         if (std::fflush(stdout) != 0 || std::ferror(stdout) != 0) {
-            throw writeError("standard output");
+            throw writeError("standard output", standardOutputError() != 0 ? standardOutputError()
+                                                                            : errno);
         }
         return;
     }
     const bool flushFailed = std::fflush(m_file) != 0;
-    const int flushError = errno;
     const bool failed = flushFailed || std::ferror(m_file) != 0;
     const bool closeFailed = std::fclose(m_file) != 0;
     m_file = nullptr;
-    if (flushError != 0) {
-        errno = flushError;
-    }
     const std::string written = m_direct ? m_path : m_temporary.string();
     unregisterTemporaryFile(m_temporarySlot);
     m_temporarySlot = -1;
     if (failed || closeFailed) {
-        const OutputError problem = writeError(written);
+        const OutputError problem = writeError(written, m_sink.error);
         std::error_code ignored;
         if (!m_direct) {
             std::filesystem::remove(m_temporary, ignored);

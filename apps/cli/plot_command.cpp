@@ -10,6 +10,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <array>
 #include <cerrno>
 #include <csignal>
 #include <cstring>
@@ -31,8 +32,9 @@ namespace {
 constexpr std::size_t kMostCurves = 12;
 
 /// Runs gnuplot without a shell (posix_spawnp with an argument vector), feeding it `script` on
-/// standard input, so no file name is ever parsed by a shell. Throws with the real reason.
-void runGnuplot(const std::string& script)
+/// standard input, so no file name is ever parsed by a shell; its standard output, where the
+/// image goes, is `image`. Throws with the real reason.
+void runGnuplot(const std::string& script, int image)
 {
     int pipeEnds[2];
     if (pipe(pipeEnds) != 0) {
@@ -41,6 +43,7 @@ void runGnuplot(const std::string& script)
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_adddup2(&actions, pipeEnds[0], STDIN_FILENO);
+    posix_spawn_file_actions_adddup2(&actions, image, STDOUT_FILENO);
     posix_spawn_file_actions_addclose(&actions, pipeEnds[0]);
     posix_spawn_file_actions_addclose(&actions, pipeEnds[1]);
     char program[] = "gnuplot";
@@ -218,8 +221,8 @@ struct Curve {
     std::string style;
 };
 
-std::string scriptFor(const std::filesystem::path& path, const std::filesystem::path& png,
-                      const std::string& body)
+/// The gnuplot script that plots the CSV at `path`; the image goes to standard output.
+std::string scriptFor(const std::filesystem::path& path, const std::string& body)
 {
     const TumbleCsv csv = readTumbleCsv(path);
     std::string kind;
@@ -262,7 +265,6 @@ std::string scriptFor(const std::filesystem::path& path, const std::filesystem::
 
     std::ostringstream script;
     script << "set terminal pngcairo size 1200,700 font 'sans,11'\n"
-           << "set output " << quoted(png.string()) << "\n"
            << "set termoption noenhanced\n"
            << "set datafile separator ','\nset key below maxcols 3\nset grid\n"
            << "set xlabel 'time (s)'\nset ylabel " << quoted(ylabel) << "\n";
@@ -307,14 +309,30 @@ void createDirectories(const std::string& directory)
     }
 }
 
-/// Fails with exit code 3 before gnuplot runs when the PNG cannot be written there.
-void checkWritable(const std::filesystem::path& png)
+/// Draws `script` with gnuplot into `png`, whole or not at all. The file is opened here first
+/// (as PNG.tmp, renamed when gnuplot succeeds), so an output that cannot be written is exit 3
+/// with the system's reason before gnuplot runs; gnuplot writes the image to its standard output,
+/// which is that file, so no PNG data ever reaches the terminal.
+void drawPng(const std::filesystem::path& png, const std::string& script)
 {
-    const std::filesystem::path folder =
-        png.parent_path().empty() ? std::filesystem::path(".") : png.parent_path();
-    if (access(folder.c_str(), W_OK) != 0) {
-        throw OutputError("cannot write " + png.string() + ": " + std::strerror(errno));
-    }
+    OutputFile image(png.string());
+    runGnuplot(script, image.descriptor());
+    image.finish();
+    std::cout << "wrote " << png.string() << '\n';
+}
+
+/// The look of convergence series `i`: its own colour and point type. gnuplot's default cycle
+/// repeats its colours after 8 series and the study has more; here a colour and a point type pair
+/// repeats only after 16 x 15 series, and the first 15 differ in both.
+std::string seriesStyle(std::size_t i)
+{
+    static constexpr std::array<const char*, 16> kColours{
+        "#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f",
+        "#bcbd22", "#17becf", "#000000", "#aec7e8", "#ffbb78", "#98df8a", "#ff9896", "#c5b0d5"};
+    // pngcairo's 15 distinct point shapes
+    constexpr std::size_t kPointTypes = 15;
+    return std::string("lc rgb '") + kColours[i % kColours.size()] + "' pt " +
+           std::to_string(1 + i % kPointTypes);
 }
 
 } // namespace
@@ -344,10 +362,7 @@ int plotCommand(const PlotOptions& options)
             createDirectories(options.outputDirectory);
             png = std::filesystem::path(options.outputDirectory) / png.filename();
         }
-        const std::string script = scriptFor(csv, png, options.body);
-        checkWritable(png);
-        runGnuplot(script);
-        std::cout << "wrote " << png.string() << '\n';
+        drawPng(png, scriptFor(csv, options.body));
     }
     return kExitOk;
 }
@@ -359,20 +374,17 @@ void plotConvergence(const std::string& directory, const std::vector<Real>& step
     const std::filesystem::path png = std::filesystem::path(directory) / "convergence.png";
     std::ostringstream script;
     script << "set terminal pngcairo size 1200,800 font 'sans,11'\n"
-           << "set output " << quoted(png.string()) << "\n"
            << "set logscale xy\nset grid\nset key below maxcols 2\nset format y '1e%L'\n"
            << "set termoption noenhanced\nset xrange [*:0.02]\n"
            << "set xlabel 'dt (s)'\nset ylabel 'error'\n"
            << "set title 'tumble validate: error against time step'\n"
            << "plot ";
-    bool first = true;
-    for (const ConvergenceSeries& line : series) {
-        // Errors at rounding level are drawn at the floor so log axes can show them.
-        script << (first ? "" : ", ") << "'-' using 1:2 with linespoints lw 2 title "
-               << quoted(line.label);
-        first = false;
+    for (std::size_t i = 0; i < series.size(); ++i) {
+        script << (i == 0 ? "" : ", ") << "'-' using 1:2 with linespoints lw 2 "
+               << seriesStyle(i) << " title " << quoted(series[i].label);
     }
     script << "\n";
+    // errors at rounding level are drawn at the floor so log axes can show them
     for (const ConvergenceSeries& line : series) {
         for (std::size_t i = 0; i < steps.size() && i < line.errors.size(); ++i) {
             script << formatFull(steps[i]) << ' ' << formatFull(std::max(line.errors[i], 1e-16))
@@ -380,9 +392,7 @@ void plotConvergence(const std::string& directory, const std::vector<Real>& step
         }
         script << "e\n";
     }
-    checkWritable(png);
-    runGnuplot(script.str());
-    std::cout << "wrote " << png.string() << '\n';
+    drawPng(png, script.str());
 }
 
 } // namespace tumble::cli

@@ -11,12 +11,16 @@
 #include "tumble/scenario/scenario.hpp"
 #include "tumble/state_hash.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <limits>
 #include <optional>
+#include <string_view>
 
 #include <unistd.h>
 
@@ -50,6 +54,54 @@ void warnAboutSolverEnergyGain(const scenario::Runner& runner)
     }
 }
 
+/// A shorthand option of run and the scenario key it sets.
+struct Shorthand {
+    std::string_view option;
+    std::string_view key;
+    const std::string& value;
+};
+
+/// Whether one of the --set overrides sets `key` (KEY=VALUE, spaces around KEY allowed).
+bool setByOverride(const std::vector<std::string>& overrides, std::string_view key)
+{
+    return std::any_of(overrides.begin(), overrides.end(), [&](const std::string& text) {
+        std::string_view target = std::string_view(text).substr(0, text.find('='));
+        const std::size_t first = target.find_first_not_of(" \t");
+        const std::size_t last = target.find_last_not_of(" \t");
+        target = first == std::string_view::npos ? std::string_view()
+                                                  : target.substr(first, last - first + 1);
+        return target == key;
+    });
+}
+
+/// The scenario with --set and the shorthands --duration and --dt applied. The shorthands are
+/// overrides given last, so they win; a value they give is checked as a number by CLI11 and passed
+/// on in full digits. An error in that value names the shorthand; when --set sets the same key,
+/// the two cannot be told apart and the error names --set.
+scenario::Scenario loadWithShorthands(const RunOptions& options)
+{
+    const std::array<Shorthand, 2> shorthands{{{"--duration", "world.duration", options.duration},
+                                                {"--dt", "world.dt", options.dt}}};
+    std::vector<std::string> overrides = options.overrides;
+    for (const Shorthand& shorthand : shorthands) {
+        if (!shorthand.value.empty()) {
+            overrides.push_back(std::string(shorthand.key) + "=" +
+                                formatFull(std::strtod(shorthand.value.c_str(), nullptr)));
+        }
+    }
+    try {
+        return scenario::loadScenario(options.file, overrides);
+    } catch (const scenario::ScenarioError& error) {
+        for (const Shorthand& shorthand : shorthands) {
+            if (!shorthand.value.empty() && error.where().file == "--set" &&
+                error.key() == shorthand.key && !setByOverride(options.overrides, shorthand.key)) {
+                throw UsageError(std::string(shorthand.option), error.problem());
+            }
+        }
+        throw;
+    }
+}
+
 } // namespace
 
 CLI::App* addRunCommand(CLI::App& app, RunOptions& options)
@@ -70,9 +122,11 @@ CLI::App* addRunCommand(CLI::App& app, RunOptions& options)
         ->type_name("PATH");
     command->add_option("--duration", options.duration,
                         "Simulated time, s (same as --set world.duration=T)")
-        ->type_name("T");
+        ->type_name("T")
+        ->check(positiveNumber());
     command->add_option("--dt", options.dt, "Time step, s (same as --set world.dt=S)")
-        ->type_name("S");
+        ->type_name("S")
+        ->check(positiveNumber());
     command->add_flag("--quiet,-q", options.quiet, "Print no per-event lines");
     addThreadsOption(command, options.threads,
                      "Threads to step the bodies on (default 0: one per core, at most " +
@@ -91,19 +145,11 @@ CLI::App* addRunCommand(CLI::App& app, RunOptions& options)
 
 int runCommand(const RunOptions& options)
 {
-    // the shorthands are overrides too, given last so they win
-    std::vector<std::string> overrides = options.overrides;
-    if (!options.duration.empty()) {
-        overrides.push_back("world.duration=" + options.duration);
-    }
-    if (!options.dt.empty()) {
-        overrides.push_back("world.dt=" + options.dt);
-    }
     // an output must not replace the scenario or another output (issue 14, item 11)
     checkDistinctPaths(options.file, {{"--csv", options.csvPath},
                                       {"--energy-csv", options.energyCsvPath},
                                       {"--contacts-csv", options.contactsCsvPath}});
-    scenario::Scenario loaded = scenario::loadScenario(options.file, overrides);
+    scenario::Scenario loaded = loadWithShorthands(options);
     loaded.settings.recordContacts = !options.contactsCsvPath.empty();
     loaded.settings.threads = options.threads;
     scenario::Runner runner(loaded);

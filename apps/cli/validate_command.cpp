@@ -82,6 +82,27 @@ struct StudyRow {
     std::optional<Real> order;
 };
 
+/// The options that cannot be run, as exit 2: a step that does not divide a second, and --plot
+/// with --no-study.
+void checkOptions(const ValidateOptions& options)
+{
+    // the plot is of the convergence study, so it cannot go with the table alone
+    if (options.tableOnly && !options.plotDirectory.empty()) {
+        throw UsageError("--plot", "the plot draws the convergence study, which --no-study leaves "
+                                   "out; give one or the other");
+    }
+    // the cases compare at whole seconds (free fall at t = 1 s, sliding for 3 s, ...): a step that
+    // does not divide a second compared at a time it never simulated (issue 14, item 6)
+    for (const Real dt : options.steps) {
+        const Real perSecond = 1.0 / dt;
+        if (std::fabs(perSecond - std::round(perSecond)) > 1e-9 * perSecond) {
+            throw UsageError("--dt", "the validation cases compare at whole seconds, so dt must "
+                                     "be 1/n s for a whole number n (0.025 = 1/40, 0.01 = 1/100), "
+                                     "got " + formatShort(dt) + " = 1/" + formatShort(perSecond));
+        }
+    }
+}
+
 } // namespace
 
 CLI::App* addValidateCommand(CLI::App& app, ValidateOptions& options)
@@ -103,16 +124,7 @@ CLI::App* addValidateCommand(CLI::App& app, ValidateOptions& options)
 
 int validateCommand(const ValidateOptions& options)
 {
-    // the cases compare at whole seconds (free fall at t = 1 s, sliding for 3 s, ...): a step that
-    // does not divide a second compared at a time it never simulated (issue 14, item 6)
-    for (const Real dt : options.steps) {
-        const Real perSecond = 1.0 / dt;
-        if (std::fabs(perSecond - std::round(perSecond)) > 1e-9 * perSecond) {
-            throw UsageError("--dt", "the validation cases compare at whole seconds, so dt must "
-                                     "be 1/n s for a whole number n (0.025 = 1/40, 0.01 = 1/100), "
-                                     "got " + formatShort(dt) + " = 1/" + formatShort(perSecond));
-        }
-    }
+    checkOptions(options);
     const std::vector<Real> tableSteps =
         options.steps.empty() ? std::vector<Real>{1.0 / 240.0} : options.steps;
     const std::vector<Real> studySteps = validation::convergenceSteps();

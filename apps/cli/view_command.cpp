@@ -2,6 +2,7 @@
 
 #include "cli_options.hpp"
 #include "console.hpp"
+#include "output_file.hpp"
 
 #include "tumble/scenario/runner.hpp"
 
@@ -9,9 +10,12 @@
 #include "viewer/viewer.hpp"
 #endif
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
+#include <filesystem>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -55,6 +59,18 @@ void checkCaptureTime(const ViewOptions& options)
         throw UsageError("--at", "the number of steps --at / dt must be at most 1e+09, got " +
                                      std::string(steps) + " (dt = " + formatFull(loaded.dt) +
                                      " s)");
+    }
+}
+
+/// The capture mode writes PNG only: any other name is exit 2, so no .jpg holds PNG data.
+void checkImageName(const std::string& path)
+{
+    std::string extension = std::filesystem::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (extension != ".png") {
+        throw UsageError("--screenshot", "the capture is a PNG image, so the file name must end "
+                                         "in .png, got \"" + path + "\"");
     }
 }
 
@@ -115,6 +131,9 @@ int viewCommand(const ViewOptions& options)
                    " to " + std::to_string(kMaxSide) + " pixels, got \"" + options.size + "\"");
         return kExitBadInput;
     }
+    if (!options.screenshot.empty()) {
+        checkImageName(options.screenshot);
+    }
     if (!options.at.empty()) {
         checkCaptureTime(options);
     }
@@ -122,8 +141,17 @@ int viewCommand(const ViewOptions& options)
     viewer::ViewerOptions viewerOptions;
     viewerOptions.file = options.file;
     viewerOptions.overrides = options.overrides;
+    // the image is opened before any window, as run opens its CSV files: an output that cannot
+    // be written is exit 3 with the system's reason, and the file is whole or not there
+    std::optional<OutputFile> image;
     if (!options.screenshot.empty()) {
-        viewerOptions.screenshot = options.screenshot;
+        image.emplace(options.screenshot);
+        viewerOptions.screenshot = viewer::ScreenshotTarget{
+            .path = options.screenshot,
+            .write = [&image](std::span<const std::uint8_t> bytes) {
+                std::fwrite(bytes.data(), 1, bytes.size(), image->handle());
+                image->finish();
+            }};
     }
     if (!options.at.empty()) {
         viewerOptions.at = std::stod(options.at);

@@ -38,10 +38,18 @@ double timedFrame(const OffscreenTarget& target, const std::function<void()>& dr
     return elapsed.count();
 }
 
+/// Appends stb's encoded bytes to a std::vector<std::uint8_t>.
+void appendBytes(void* context, void* data, int size)
+{
+    auto* bytes = static_cast<std::vector<std::uint8_t>*>(context);
+    const auto* first = static_cast<const std::uint8_t*>(data);
+    bytes->insert(bytes->end(), first, first + size);
+}
+
 } // namespace
 
-CaptureTiming captureFrame(const std::filesystem::path& png, int width, int height,
-                           const std::function<void()>& drawFrame)
+CaptureTiming captureFrame(const std::function<void(std::span<const std::uint8_t>)>& write,
+                           int width, int height, const std::function<void()>& drawFrame)
 {
     const OffscreenTarget target(width, height, kCaptureSamples);
     CaptureTiming timing;
@@ -59,9 +67,12 @@ CaptureTiming captureFrame(const std::filesystem::path& png, int width, int heig
     timing.timedFrames = kTimedCaptureFrames;
 
     const std::vector<std::uint8_t> pixels = target.readRgb();
-    if (stbi_write_png(png.string().c_str(), width, height, 3, pixels.data(), width * 3) == 0) {
-        throw std::runtime_error("cannot write " + png.string());
+    std::vector<std::uint8_t> png;
+    if (stbi_write_png_to_func(appendBytes, &png, width, height, 3, pixels.data(), width * 3) ==
+        0) {
+        throw std::runtime_error("cannot encode the frame as PNG");
     }
+    write(png);
     return timing;
 }
 

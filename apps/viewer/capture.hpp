@@ -1,9 +1,10 @@
-// The capture mode: draw a frame into an offscreen target of a given size, time it, and write
+// The capture mode: draw a frame into an offscreen target of a given size, time it, and encode
 // it as a PNG file.
 #pragma once
 
-#include <filesystem>
+#include <cstdint>
 #include <functional>
+#include <span>
 #include <string>
 
 namespace tumble::viewer {
@@ -26,8 +27,8 @@ inline constexpr int kTimedCaptureFrames = 10;
 
 /// Calls `drawFrame` (which draws into the bound framebuffer, width x height) into an offscreen
 /// target once, then kTimedCaptureFrames more times, each finished with glFinish and timed, and
-/// writes the last frame to `png`. Throws std::runtime_error when the file cannot be written.
-CaptureTiming captureFrame(const std::filesystem::path& png, int width, int height,
-                           const std::function<void()>& drawFrame);
+/// hands the last frame, encoded as a whole PNG file, to `write`, which stores it or throws.
+CaptureTiming captureFrame(const std::function<void(std::span<const std::uint8_t>)>& write,
+                           int width, int height, const std::function<void()>& drawFrame);
 
 } // namespace tumble::viewer

@@ -180,9 +180,10 @@ void runLoop(Window& window, Renderer& renderer, ViewerState& state)
 }
 
 int capture(Window& window, Renderer& renderer, ViewerState& state,
-            const std::filesystem::path& png, const glm::ivec2& size)
+            const ScreenshotTarget& screenshot, const glm::ivec2& size)
 {
-    const CaptureTiming timing = captureFrame(png, size.x, size.y, [&] {
+    const std::filesystem::path& png = screenshot.path;
+    const CaptureTiming timing = captureFrame(screenshot.write, size.x, size.y, [&] {
         window.beginUiFrame(size);
         if (state.settings.showUi) {
             ui::drawPanels(state);

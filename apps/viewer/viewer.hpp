@@ -3,9 +3,11 @@
 
 #include "tumble/scenario/runner.hpp"
 
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -20,13 +22,22 @@ struct LogFormat {
     std::function<std::string(const scenario::Runner&, const scenario::StepReport&)> step;
 };
 
+/// Where the capture mode's image goes: the program opens and finishes the file, so its checks
+/// and errors are the program's own.
+struct ScreenshotTarget {
+    /// The image's name in messages.
+    std::filesystem::path path;
+    /// Stores the whole PNG file; throws when it cannot.
+    std::function<void(std::span<const std::uint8_t>)> write;
+};
+
 struct ViewerOptions {
     /// Scenario file; empty for the default (scenarios/part3_task4_friction.toml).
     std::filesystem::path file;
     /// "KEY=VALUE" overrides, as `tumble run --set` takes them.
     std::vector<std::string> overrides;
-    /// Capture mode: render one frame at time `at` into this PNG file and exit.
-    std::optional<std::filesystem::path> screenshot;
+    /// Capture mode: render one frame at time `at` as PNG into this target and exit.
+    std::optional<ScreenshotTarget> screenshot;
     /// Simulated time to start at, s (the window opens paused there).
     std::optional<double> at;
     /// Window or image size, pixels.
@@ -38,8 +49,9 @@ struct ViewerOptions {
 };
 
 /// Opens the viewer on a scenario, or in capture mode writes one frame and prints how long it
-/// took to render. Returns the exit code. Throws ScenarioError for a bad scenario and
-/// std::runtime_error when no window, GL context or image file can be made.
+/// took to render. Returns the exit code. Throws ScenarioError for a bad scenario,
+/// std::runtime_error when no window or GL context can be made, and what the screenshot target's
+/// write throws.
 int runViewer(const ViewerOptions& options);
 
 } // namespace tumble::viewer

@@ -41,7 +41,7 @@ inline std::string quoted(const std::string& text)
 enum class Capture { Both, StdoutOnly, StderrOnly };
 
 /// Runs `tumble` with the given arguments (each quoted for the shell).
-inline Result runTumble(std::initializer_list<std::string> arguments, Capture capture = Capture::Both)
+inline Result runTumble(const std::vector<std::string>& arguments, Capture capture = Capture::Both)
 {
     std::string command = quoted(TUMBLE_EXE);
     for (const std::string& argument : arguments) {
@@ -74,6 +74,11 @@ inline Result runTumble(std::initializer_list<std::string> arguments, Capture ca
     const int status = pclose(pipe);
     result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return result;
+}
+
+inline Result runTumble(std::initializer_list<std::string> arguments, Capture capture = Capture::Both)
+{
+    return runTumble(std::vector<std::string>(arguments), capture);
 }
 
 inline std::string readFile(const fs::path& path)

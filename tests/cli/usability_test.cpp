@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -73,6 +74,27 @@ TEST(CliMessages, HelpAndVersionAndUnknownCommands)
     const Result version = runTumble({"--version"}, Capture::StdoutOnly);
     EXPECT_EQ(version.exitCode, 0);
     EXPECT_EQ(version.output.rfind("tumble ", 0), 0u) << version.output;
+}
+
+// item 17: an error in the value of --dt or --duration names that option, not --set
+TEST(CliMessages, TheShorthandsNameThemselvesInErrors)
+{
+    expectUsageError({"run", kFriction, "--dt", "abc"},
+                     "--dt: must be a number above 0, got 'abc'");
+    expectUsageError({"run", kFriction, "--dt", "10"},
+                     "--dt: must be between 1e-06 and 0.1 s, got 10");
+    expectUsageError({"run", kFriction, "--duration", "abc"},
+                     "--duration: must be a number above 0, got 'abc'");
+    expectUsageError({"run", kFriction, "--dt", "1e-6", "--duration", "1e5"},
+                     "--duration: the number of steps duration / dt must be at most");
+    // a value given with --set keeps naming --set
+    expectUsageError({"run", kFriction, "--set", "world.dt=abc"},
+                     "--set: world.dt: expected a number");
+    // a number the option takes is passed on as a number, whatever its spelling
+    const Result spelled =
+        runTumble({"run", kFriction, "--quiet", "--dt", ".05", "--duration", ".1"});
+    EXPECT_EQ(spelled.exitCode, 0) << spelled.output;
+    EXPECT_NE(spelled.output.find("dt = 0.05 s"), std::string::npos) << spelled.output;
 }
 
 } // namespace
@@ -228,6 +250,55 @@ TEST_F(CliPlot, AFailureGivesTheRealReason)
         << absent.output;
 }
 
+// item 21: validate --plot draws the study, so it is refused with --no-study instead of writing
+// nothing; each series of convergence.png has a colour and point type of its own
+TEST_F(CliPlot, ValidatePlotNeedsTheStudyAndGivesEachSeriesItsOwnLook)
+{
+    const fs::path plots = dir() / "plots";
+    expectUsageError({"validate", "--no-study", "--plot", plots.string()},
+                     "--plot: the plot draws the convergence study, which --no-study leaves out");
+    EXPECT_FALSE(fs::exists(plots));
+
+    const fs::path script = dir() / "script.gp";
+    writeFakeGnuplot(dir() / "bin", script, 0);
+    const Result result = runWithPath((dir() / "bin").string() + ":/usr/bin:/bin",
+                                      {"validate", "--plot", plots.string()});
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    const std::string text = readFile(script);
+    const std::string plot = text.substr(text.find("\nplot ") + 1);
+    const std::string clauses = plot.substr(0, plot.find('\n'));
+    std::set<std::string> looks;
+    std::size_t series = 0;
+    for (std::size_t at = clauses.find("'-' using"); at != std::string::npos;
+         at = clauses.find("'-' using", at + 1)) {
+        ++series;
+        const std::size_t colour = clauses.find("lc rgb '", at);
+        const std::size_t title = clauses.find(" title ", at);
+        ASSERT_LT(colour, title) << clauses;
+        looks.insert(clauses.substr(colour, title - colour));
+    }
+    EXPECT_GT(series, 8u) << "more series than gnuplot's default colours\n" << clauses;
+    EXPECT_EQ(looks.size(), series) << clauses;
+}
+
+// item 17: an output plot cannot write is exit 3 with the system's reason on one line, before
+// gnuplot runs, and no image data reaches the terminal
+TEST_F(CliPlot, AnUnwritableOutputIsExitThreeWithTheReason)
+{
+    if (!fs::is_directory("/sys/kernel")) {
+        GTEST_SKIP() << "needs /sys/kernel, a folder where no file can be made, even by root";
+    }
+    writeImpulseCsv();
+    const Result result =
+        runTumble({"plot", (dir() / "imp.csv").string(), "--out", "/sys/kernel"}, Capture::Both);
+    EXPECT_EQ(result.exitCode, 3) << result.output;
+    EXPECT_EQ(lines(result.output).size(), 1u) << result.output;
+    EXPECT_EQ(result.output.rfind("tumble: error: cannot write /sys/kernel/imp.png", 0), 0u)
+        << result.output;
+    EXPECT_NE(result.output.find(": Permission denied"), std::string::npos) << result.output;
+    EXPECT_EQ(result.output.find("PNG"), std::string::npos) << result.output;
+}
+
 } // namespace
 
 namespace {
@@ -333,6 +404,61 @@ TEST(CliValidate, AStepThatDoesNotDivideASecondIsRefused)
 namespace {
 
 using namespace tumble::cli_test;
+
+// item 17: a write that fails is reported with the system's reason, naming the file, in every
+// command, however early in the run it failed (validate writes its CSV in one piece)
+TEST(CliMessages, AFullDiskIsReportedWithTheSystemsReasonByEveryCommand)
+{
+    if (!fs::exists("/dev/full")) {
+        GTEST_SKIP() << "needs /dev/full";
+    }
+    const std::string reason = "tumble: error: cannot write /dev/full: No space left on device\n";
+    const std::vector<std::vector<std::string>> commands = {
+        {"run", kFriction, "--quiet", "--csv", "/dev/full"},
+        {"run", kFriction, "--quiet", "--energy-csv", "/dev/full"},
+        {"run", kFriction, "--quiet", "--contacts-csv", "/dev/full"},
+        {"throw", kDice, "--throws", "20", "--csv", "/dev/full"},
+        {"validate", "--no-study", "--csv", "/dev/full"}};
+    for (const std::vector<std::string>& command : commands) {
+        const Result result = runTumble(command, Capture::StderrOnly);
+        EXPECT_EQ(result.exitCode, 3) << command.front() << "\n" << result.output;
+        EXPECT_EQ(result.output, reason) << command.front() << " " << command.back();
+    }
+    // the console on a full disk: its lines are written (and fail) one at a time
+    const std::vector<std::string> consoles = {
+        quoted(TUMBLE_EXE) + " run " + quoted(kFriction),
+        quoted(TUMBLE_EXE) + " throw " + quoted(kDice) + " --throws 20",
+        quoted(TUMBLE_EXE) + " validate --no-study"};
+    for (const std::string& command : consoles) {
+        std::FILE* pipe = popen((command + " 2>&1 >/dev/full").c_str(), "r");
+        ASSERT_NE(pipe, nullptr);
+        std::string output;
+        for (int c = std::fgetc(pipe); c != EOF; c = std::fgetc(pipe)) {
+            output += static_cast<char>(c);
+        }
+        const int status = pclose(pipe);
+        EXPECT_EQ(WEXITSTATUS(status), 3) << command << "\n" << output;
+        EXPECT_EQ(output, "tumble: error: cannot write standard output: No space left on device\n")
+            << command;
+    }
+}
+
+// items 17 and 21: view's image is PNG only (exit 2 for another name) and is opened before any
+// window, so an output that cannot be written is exit 3 with the system's reason, as in run
+TEST_F(CliTest, ViewScreenshotIsAWritablePng)
+{
+    const std::string jpg = (dir() / "x.jpg").string();
+    expectUsageError({"view", "--screenshot", jpg},
+                     "--screenshot: the capture is a PNG image, so the file name must end in .png");
+    expectUsageError({"view", "--screenshot", "-"}, "--screenshot:");
+    EXPECT_FALSE(fs::exists(jpg));
+
+    const Result missing = runTumble({"view", "--screenshot", "/nonexistent/dir/x.png"},
+                                     Capture::StderrOnly);
+    EXPECT_EQ(missing.exitCode, 3) << missing.output;
+    EXPECT_EQ(missing.output, "tumble: error: cannot write /nonexistent/dir/x.png.tmp: "
+                              "No such file or directory\n");
+}
 
 // item 8: view --at has run's limits; the error comes before any window or capture
 TEST_F(CliTest, ViewAtIsCheckedLikeARunsDuration)

@@ -139,6 +139,28 @@ TEST(ScenarioTomlErrors, InfiniteVectorComponent)
                           "scene.toml:3: body[0].velocity[1]: ", "must be finite, got -inf"));
 }
 
+// a vector whose squares overflow is reported with its length as written, not as inf
+TEST(ScenarioTomlErrors, HugeVectorIsReportedWithItsOwnMagnitude)
+{
+    EXPECT_TRUE(failsWith("[[body]]\nposition = [0, 1e300, 0]\n", "scene.toml:2: body[0].position: ",
+                          "must be at most 1e+06 m, got 1e+300"));
+    EXPECT_TRUE(failsWith("[[body]]\nvelocity = [0, 0, -5e200]\n",
+                          "scene.toml:2: body[0].velocity: ", "got 5e+200"));
+    EXPECT_TRUE(failsWith("[[body]]\nangular_velocity = [0, 0, -1e300]\n",
+                          "scene.toml:2: body[0].angular_velocity: ", "got 1e+300"));
+    EXPECT_TRUE(failsWith("[world]\ngravity = [0, -1e300, 0]\n[[body]]\n",
+                          "scene.toml:2: world.gravity: ", "got 1e+300"));
+    EXPECT_TRUE(failsWith(
+        "[[body]]\n[[impulse]]\nat = 0\nbody = \"body1\"\nimpulse = [1e308, 1e308, 1e308]\n",
+        "scene.toml:5: impulse[0].impulse: ", "got 1.7320508"));
+    EXPECT_TRUE(failsWith("[[spawn]]\ncount = 4\nspacing = 1e308\nheight = [1, 2]\n",
+                          "scene.toml:3: spawn[0].spacing: ", "got 1e+308"));
+    const std::optional<ScenarioError> error =
+        parseError("[[body]]\nposition = [1e300, 1e300, 0]\n");
+    ASSERT_TRUE(error.has_value());
+    EXPECT_EQ(std::string(error->what()).find("inf"), std::string::npos) << error->what();
+}
+
 TEST(ScenarioTomlErrors, QuaternionFarFromUnitLength)
 {
     EXPECT_TRUE(failsWith("[[body]]\norientation = [1, 0, 0, 0.1]\n",

@@ -123,5 +123,22 @@ TEST(Capture, BadSizeOrFileIsBadInput)
     EXPECT_FALSE(std::filesystem::exists(kCaptures / "never.png"));
 }
 
+// a capture that cannot be stored (a full disk) is exit 3 with the system's reason, not "wrote"
+TEST(Capture, AWriteErrorIsAnOutputError)
+{
+    std::filesystem::create_directories(kCaptures);
+    const std::filesystem::path full = kCaptures / "full.png";
+    std::filesystem::remove(full);
+    std::filesystem::create_symlink("/dev/full", full);
+    const ProgramRun run = runTumble("view --size 64x64 --screenshot " + full.string());
+    std::filesystem::remove(full);
+    EXPECT_EQ(run.exitCode, 3) << run.output;
+    EXPECT_NE(run.output.find("tumble: error: cannot write " + full.string() +
+                              ": No space left on device\n"),
+              std::string::npos)
+        << run.output;
+    EXPECT_EQ(run.output.find("wrote"), std::string::npos) << run.output;
+}
+
 } // namespace
 } // namespace tumble::viewer

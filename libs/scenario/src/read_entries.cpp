@@ -3,6 +3,7 @@
 
 #include "messages.hpp"
 #include "schema.hpp"
+#include "vector_length.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -18,7 +19,7 @@ namespace tumble::scenario::detail {
 void checkAngularSpeed(const TomlReader& reader, const toml::node& node, const std::string& key,
                        const Vec3& angularVelocity, Real dt, const std::string& context)
 {
-    const Real speed = glm::length(angularVelocity);
+    const Real speed = vectorLength(angularVelocity);
     reader.checkRange(node, key, speed, kAngularSpeedRange, "the angular speed ", context);
     reader.checkRange(node, key, speed * dt, kTurnPerStepRange,
                       "the angle turned in one step (|angular_velocity| dt, dt = " +
@@ -126,7 +127,7 @@ BodySpec readBody(const TomlReader& reader, const toml::table& table, std::size_
     });
     ifPresent(table, "position", [&](const toml::node& node) {
         def.position = reader.vec3(node, key + ".position");
-        reader.checkRange(node, key + ".position", glm::length(def.position), kPositionRange,
+        reader.checkRange(node, key + ".position", vectorLength(def.position), kPositionRange,
                           "the distance from the origin ", context);
     });
     ifPresent(table, "orientation", [&](const toml::node& node) {
@@ -134,7 +135,7 @@ BodySpec readBody(const TomlReader& reader, const toml::table& table, std::size_
     });
     ifPresent(table, "velocity", [&](const toml::node& node) {
         def.linearVelocity = reader.vec3(node, key + ".velocity");
-        reader.checkRange(node, key + ".velocity", glm::length(def.linearVelocity), kSpeedRange,
+        reader.checkRange(node, key + ".velocity", vectorLength(def.linearVelocity), kSpeedRange,
                           "the speed ", context);
     });
     ifPresent(table, "angular_velocity", [&](const toml::node& node) {
@@ -200,11 +201,11 @@ void readImpulseValue(const TomlReader& reader, const toml::table& table, Real d
     }
     if (impulse != nullptr) {
         spec.impulse = reader.vec3(*impulse, key + ".impulse");
-        reader.checkRange(*impulse, key + ".impulse", glm::length(*spec.impulse), kImpulseRange,
+        reader.checkRange(*impulse, key + ".impulse", vectorLength(*spec.impulse), kImpulseRange,
                           "the length ");
         spec.offset = offset == nullptr ? Vec3(0.0) : reader.vec3(*offset, key + ".offset");
         if (offset != nullptr) {
-            reader.checkRange(*offset, key + ".offset", glm::length(*spec.offset), kOffsetRange,
+            reader.checkRange(*offset, key + ".offset", vectorLength(*spec.offset), kOffsetRange,
                               "the length ");
         }
         return;
@@ -220,7 +221,7 @@ void readImpulseValue(const TomlReader& reader, const toml::table& table, Real d
                     "current value to keep one unchanged)");
     }
     spec.targetVelocity = reader.vec3(*velocity, key + ".velocity");
-    reader.checkRange(*velocity, key + ".velocity", glm::length(*spec.targetVelocity),
+    reader.checkRange(*velocity, key + ".velocity", vectorLength(*spec.targetVelocity),
                       kSpeedRange, "the speed ");
     spec.targetAngularVelocity = reader.vec3(*angularVelocity, key + ".angular_velocity");
     checkAngularSpeed(reader, *angularVelocity, key + ".angular_velocity",

@@ -4,6 +4,7 @@
 
 #include "messages.hpp"
 #include "schema.hpp"
+#include "vector_length.hpp"
 
 #include "tumble/scenario/random_draws.hpp"
 
@@ -82,6 +83,12 @@ SpawnSpec readSpawn(const TomlReader& reader, const toml::table& table, std::siz
                             " m, got " + formatReal(spawn.spacing) +
                             ": neighbours could start inside each other" + context);
         }
+        // neighbours farther apart than the valid positions cannot both lie within them; checked
+        // on the value as written, before the farthest corner is computed from it
+        if (spawn.count > 1) {
+            reader.checkRange(node, key + ".spacing", spawn.spacing, kPositionRange,
+                              "the distance between neighbours ", context);
+        }
     });
     const toml::node* height = table.get("height");
     if (height == nullptr) {
@@ -122,7 +129,7 @@ SpawnSpec readSpawn(const TomlReader& reader, const toml::table& table, std::siz
     });
     ifPresent(table, "velocity", [&](const toml::node& node) {
         body.linearVelocity = reader.vec3(node, key + ".velocity");
-        reader.checkRange(node, key + ".velocity", glm::length(body.linearVelocity), kSpeedRange,
+        reader.checkRange(node, key + ".velocity", vectorLength(body.linearVelocity), kSpeedRange,
                           "the speed ", context);
     });
     readMaterial(reader, table, key, context, body.material);

@@ -4,6 +4,7 @@
 
 #include "messages.hpp"
 #include "schema.hpp"
+#include "vector_length.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -53,10 +54,10 @@ void readPlanes(const TomlReader& reader, const toml::table& root, Scenario& sce
         }
         StaticPlane plane;
         plane.point = reader.vec3(*point, key + ".point");
-        reader.checkRange(*point, key + ".point", glm::length(plane.point), kPositionRange,
+        reader.checkRange(*point, key + ".point", vectorLength(plane.point), kPositionRange,
                           "the distance from the origin ");
         const Vec3 direction = reader.vec3(*normal, key + ".normal");
-        const Real length = glm::length(direction);
+        const Real length = vectorLength(direction);
         if (!(length > 0.0) || !std::isfinite(length)) {
             reader.fail(*normal, key + ".normal", "must be a nonzero vector, got [" +
                                                       formatReal(direction.x) + ", " +

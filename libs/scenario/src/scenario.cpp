@@ -46,7 +46,7 @@ std::string formatMessage(const SourceLocation& where, const std::string& key,
 
 ScenarioError::ScenarioError(SourceLocation where, std::string key, const std::string& problem)
     : std::runtime_error(formatMessage(where, key, problem)), m_where(std::move(where)),
-      m_key(std::move(key))
+      m_key(std::move(key)), m_problem(problem)
 {
 }
 

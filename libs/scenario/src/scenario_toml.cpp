@@ -7,6 +7,7 @@
 #include "read_throw.hpp"
 #include "schema.hpp"
 #include "toml_reader.hpp"
+#include "vector_length.hpp"
 
 #include <toml++/toml.h>
 
@@ -28,7 +29,7 @@ void readSettings(const TomlReader& reader, const toml::table& world, WorldSetti
 {
     ifPresent(world, "gravity", [&](const toml::node& node) {
         settings.gravity = reader.vec3(node, "world.gravity");
-        reader.checkRange(node, "world.gravity", glm::length(settings.gravity),
+        reader.checkRange(node, "world.gravity", detail::vectorLength(settings.gravity),
                           detail::kGravityRange, "the length ");
     });
     ifPresent(world, "integrator", [&](const toml::node& node) {

@@ -4,6 +4,7 @@
 
 #include "messages.hpp"
 #include "schema.hpp"
+#include "vector_length.hpp"
 
 #include "tumble/scenario/throw.hpp"
 
@@ -261,7 +262,7 @@ Quat TomlReader::orientation(const toml::node& node, const std::string& key) con
             fail(node, key, "an axis-angle orientation needs both axis and degrees");
         }
         const Vec3 axis = vec3(*axisNode, key + ".axis");
-        const Real axisLength = glm::length(axis);
+        const Real axisLength = vectorLength(axis);
         if (!(axisLength > 0.0) || !std::isfinite(axisLength)) {
             fail(*axisNode, key + ".axis", "must be a nonzero vector, got " + formatVec3(axis));
         }

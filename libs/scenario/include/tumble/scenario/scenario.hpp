@@ -33,10 +33,13 @@ public:
 
     [[nodiscard]] const SourceLocation& where() const { return m_where; }
     [[nodiscard]] const std::string& key() const { return m_key; }
+    /// The message without its location and key.
+    [[nodiscard]] const std::string& problem() const { return m_problem; }
 
 private:
     SourceLocation m_where;
     std::string m_key;
+    std::string m_problem;
 };
 
 /// One [[body]] entry.
