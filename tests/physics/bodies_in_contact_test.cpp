@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 namespace tumble {
@@ -180,6 +181,32 @@ TEST(IslandThreads, TouchingBodiesGiveTheSameStatesAndEventsOnAnyThreadCount)
     }
     // the scene is not trivial: every pile's top cube landed on its pile
     EXPECT_GE(impacts, 16);
+}
+
+TEST(ArrivalInTime, ACubeDroppedOnARestingCubeArrivesAtTheFreeFallTimeAndSpeed)
+{
+    // (11.8), (11.8a): the top cube's face falls h = 1.5 m onto the base's, which the ground
+    // holds; it arrives at t = sqrt(2h/g) with speed sqrt(2gh), the sub-step cut at the arrival
+    // computed with the base held, and the speculative target not slowing the arrival
+    constexpr Real kGap = 1.5;
+    constexpr Real kGravity = 9.81;
+    World world(WorldSettings{.gravity = Vec3(0, -kGravity, 0), .allowSleep = false});
+    world.setGround(Plane{});
+    const Material bouncy{.restitution = 0.5, .friction = 0.5};
+    addCube(world, 1.0, 1.0, Vec3(0, 0.5, 0), Vec3(0.0), bouncy);
+    addCube(world, 1.0, 1.0, Vec3(0, 1.5 + kGap, 0), Vec3(0.0), bouncy);
+    std::optional<CollisionEvent> landing;
+    for (int step = 0; step < 240 && !landing; ++step) {
+        world.step(1.0 / 240);
+        for (const CollisionEvent& event : world.collisions()) {
+            if (!event.manifold.other.isNull() && !landing) {
+                landing = event;
+            }
+        }
+    }
+    ASSERT_TRUE(landing.has_value());
+    EXPECT_NEAR(landing->time, std::sqrt(2.0 * kGap / kGravity), 1e-9);
+    EXPECT_NEAR(landing->approachSpeed, std::sqrt(2.0 * kGravity * kGap), 1e-9);
 }
 
 TEST(IslandSolverCost, ASettledPyramidCostsOneSweepAStep)

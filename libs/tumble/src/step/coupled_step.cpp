@@ -5,6 +5,7 @@
 #include "dynamics/energy_booking.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/island_solver.hpp"
+#include "step/arrivals.hpp"
 #include "step/island_contacts.hpp"
 #include "step/island_events.hpp"
 #include "step/island_motion.hpp"
@@ -73,7 +74,7 @@ private:
     void resolveImpacts(Real time);
     [[nodiscard]] std::vector<ContactConstraint> impactConstraints() const;
     void solveSubstep(Real tau);
-    [[nodiscard]] Real earliestArrival(Real tau) const;
+    [[nodiscard]] Real earliestArrival(Real tau);
     void finishSubstep(Real tau);
     Body& body(std::size_t local) { return m_slots[m_island.bodies[local]].body; }
     void countSolve(int sweeps)
@@ -95,6 +96,8 @@ private:
     std::vector<Real> m_energies;
     std::vector<Vec3> m_velocityStart;
     std::vector<Vec3> m_angularVelocityStart;
+    /// Each constraint's gap motion over the last solve of the current sub-step (11.8).
+    std::vector<GapMotion> m_gapMotions;
     /// Time into the step at which the current sub-step starts, s.
     Real m_elapsed = 0.0;
 };
@@ -123,6 +126,7 @@ void CoupledStep::run(Real dt)
         // narrow phase: every point within reach of the rest of the step
         findIslandContacts(m_island, m_slots, m_context, remaining, m_contacts);
         buildConstraints(m_contacts, m_slots, m_island, m_constraints);
+        m_gapMotions.clear();
         ++m_events.statistics.substeps;
         if (substep == 0) {
             m_events.statistics.contactPoints += m_constraints.size();
@@ -248,39 +252,40 @@ void CoupledStep::solveSubstep(Real tau)
     for (ContactConstraint& c : m_constraints) {
         prepareConstraint(c, m_bodies, targets);
     }
+    keepExactArrivals(m_constraints, m_gapMotions, tau, m_settings.contactTolerance);
     loadWarmStart(m_island, m_slots, m_contacts, m_constraints, tau, m_settings);
     warmStart(m_constraints, m_bodies);
     countSolve(solveConstraints(m_constraints, m_bodies, m_settings.solverIterations,
                                 kRestingConvergence));
 }
 
-Real CoupledStep::earliestArrival(Real tau) const
+Real CoupledStep::earliestArrival(Real tau)
 {
     // (11.8): a point still apart that the solve had to stop (its speculative target bound) and
     // that arrives fast enough to bounce ends the sub-step when it arrives, so its impact is
     // resolved at contact, before the impacts that come after it
-    Real arrival = tau;
+    const Real touching = m_settings.contactTolerance;
+    if (!anyBouncingArrival(m_constraints, touching)) {
+        return tau;
+    }
+    // the motion without the points still apart: the points in contact solved alone, from the
+    // start velocities and gravity, give each gap its free acceleration
+    std::vector<SolverBody> free(m_bodies);
+    for (std::size_t i = 0; i < m_velocityStart.size(); ++i) {
+        free[i].linearVelocity = m_velocityStart[i] + m_settings.gravity * tau;
+        free[i].angularVelocity = m_angularVelocityStart[i];
+    }
+    std::vector<ContactConstraint> inContact;
     for (const ContactConstraint& c : m_constraints) {
-        if (c.separation <= m_settings.contactTolerance || c.normalImpulse <= 0.0 ||
-            c.restitution <= 0.0) {
-            continue;
-        }
-        // the gap under gravity alone: g + v0 t + a t^2 / 2, with the relative normal
-        // acceleration a (zero between two falling bodies) and v0 the velocity before gravity
-        const Real accelerationB = m_bodies[c.bodyB].invMass > 0.0 ? 1.0 : 0.0;
-        const Real accelerationA = m_bodies[c.bodyA].invMass > 0.0 ? 1.0 : 0.0;
-        const Real a = (accelerationB - accelerationA) * glm::dot(c.normal, m_settings.gravity);
-        const Real v0 = c.normalVelocityBefore - a * tau;
-        if (-v0 - 0.5 * a * tau <= m_settings.restitutionThreshold) {
-            continue;
-        }
-        const Real discriminant = v0 * v0 - 2.0 * a * c.separation;
-        const Real root = std::sqrt(std::max(0.0, discriminant));
-        if (-v0 + root > 0.0) {
-            arrival = std::min(arrival, 2.0 * c.separation / (-v0 + root));
+        if (c.separation <= touching) {
+            inContact.push_back(c);
         }
     }
-    return arrival;
+    warmStart(inContact, free);
+    solveConstraints(inContact, free, m_settings.solverIterations, kRestingConvergence);
+    gapMotions(m_constraints, free, m_velocityStart, m_angularVelocityStart, tau, m_gapMotions);
+    return tumble::earliestArrival(m_constraints, m_gapMotions, tau, touching,
+                                   m_settings.restitutionThreshold);
 }
 
 void CoupledStep::finishSubstep(Real tau)
