@@ -192,6 +192,29 @@ TEST(SpawnErrors, BadValuesNameTheLineAndKey)
                           "scene.toml:6: spawn[0].spacing: ", "at least the body's diagonal"));
 }
 
+TEST(SpawnErrors, SpawnedBodiesMustStartClearOfOtherBodiesAndPlanes)
+{
+    // issue 15: a dynamic body that starts inside another body or static geometry is exit 2 with
+    // the file, line and key, spawned or not. Nine 0.5 m cubes 0.87 m apart around x = z = 0 at
+    // heights 1 to 2: the middle one is inside a wall through the origin
+    const std::string nine = "count = 9\nsize = [0.5, 0.5, 0.5]\nheight = [1, 2]\n";
+    const std::string wall = "[[body]]\nname = \"wall\"\nmotion = \"static\"\n"
+                             "size = [0.2, 2, 4]\nposition = [0, 1, 0]\n";
+    EXPECT_TRUE(failsWith("[ground]\nheight = 0.0\n" + wall + "[[spawn]]\n" + nine,
+                          "scene.toml:8: spawn[0]: ", "inside body \"wall\""));
+    const std::string ramp = "[[plane]]\npoint = [0, 1.5, 0]\nnormal = [1, 1, 0]\n";
+    EXPECT_TRUE(failsWith("[ground]\nheight = 0.0\n" + ramp + "[[spawn]]\n" + nine,
+                          "scene.toml:6: spawn[0]: ", "inside plane[0]"));
+    // two spawns share the grid's centre: their middle bodies meet
+    EXPECT_TRUE(failsWith("[ground]\nheight = 0.0\n[[spawn]]\n" + nine + "[[spawn]]\n" + nine,
+                          "scene.toml:7: spawn[1]: ", "inside body \"spawn1_"));
+    // apart in height, the same two spawns load
+    EXPECT_NO_THROW((void)parseScenario("[ground]\nheight = 0.0\n[[spawn]]\n" + nine +
+                                            "[[spawn]]\ncount = 9\nsize = [0.5, 0.5, 0.5]\n"
+                                            "height = [3, 4]\n",
+                                        "s.toml"));
+}
+
 TEST(SpawnErrors, ASceneNeedsABodyOrASpawn)
 {
     EXPECT_TRUE(failsWith("[ground]\nheight = 0\n", "scene.toml: body: ",

@@ -8,6 +8,7 @@
 #include <toml++/toml.h>
 
 #include <optional>
+#include <span>
 #include <string>
 
 namespace tumble::scenario::detail {
@@ -36,6 +37,12 @@ void readBodies(const TomlReader& reader, const toml::table& root, Scenario& sce
 void checkClearOfStaticPlanes(const TomlReader& reader, const toml::table& table,
                               const BodySpec& spec, const Scenario& scenario,
                               const std::string& key);
+
+/// Fails when a body of a [[spawn]] (the entry `table`, named `key`) starts deeper than the
+/// contact tolerance inside a [[plane]], a body read before (a [[body]] or an earlier spawn's).
+void checkSpawnClearance(const TomlReader& reader, const toml::table& table,
+                         const std::string& key, const Scenario& scenario,
+                         std::span<const BodySpec> spawned);
 
 /// Fails when the body overlaps a body read before it by more than the contact tolerance, unless
 /// both are static.

@@ -158,6 +158,7 @@ void readSpawns(const TomlReader& reader, const toml::table& root, Scenario& sce
         SpawnSpec spawn = readSpawn(reader, table, i, scenario);
         std::vector<BodySpec> bodies =
             spawnBodies(spawn, groundHeight, "spawn" + std::to_string(i + 1) + "_");
+        checkSpawnClearance(reader, table, "spawn[" + std::to_string(i) + "]", scenario, bodies);
         scenario.bodies.insert(scenario.bodies.end(), std::make_move_iterator(bodies.begin()),
                                std::make_move_iterator(bodies.end()));
         scenario.spawns.push_back(spawn);
