@@ -43,7 +43,7 @@ TEST(StepAllocation, SteppingManyBodiesAllocatesNothing)
         def.shape.size = Vec3(2, 6, 2);
         def.mass = 2.0;
         // far enough apart that no two ever touch: islands of touching bodies still allocate
-        // (docs/plan-contacts.md)
+        // (docs/plan-speed.md)
         def.position = Vec3(20.0 * (i % 20), 4.0 + 0.02 * i, 20.0 * (i / 20));
         def.orientation = glm::normalize(Quat(1.0, 0.01 * i, 0.3, -0.002 * i));
         def.angularVelocity = Vec3(0.005 * i, 1.0, -0.5);

@@ -93,9 +93,10 @@ public:
     /// from the centre of mass (docs/physics/03-impulses.md). Wakes the body.
     void applyImpulse(BodyId id, const Vec3& impulse, const Vec3& worldPoint);
 
-    /// Advances every awake body by dt seconds (dt > 0). Allocates nothing once the event
-    /// buffers hold a step's events (they are reserved as bodies are created; recording contacts
-    /// and more than two impacts of each body in one step may grow them).
+    /// Advances every awake body by dt seconds (dt > 0). Bodies alone with the ground allocate
+    /// nothing once the event buffers hold a step's events (they are reserved as bodies are
+    /// created; recording contacts and more than two impacts of each body in one step may grow
+    /// them); islands of touching bodies still allocate their working buffers every step.
     void step(Real dt);
     /// Simulated time, s: the sum of the dt of every step.
     [[nodiscard]] Real time() const { return m_time; }
