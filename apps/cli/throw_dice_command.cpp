@@ -73,7 +73,8 @@ int reportDice(const ThrowOptions& options, const scenario::Scenario& loaded,
     const int signal = InterruptGuard::received();
     if (!complete) {
         printError(std::string("interrupted by ") + signalName(signal != 0 ? signal : 2) +
-                   "; the counts below are of the throws that finished" +
+                   " after " + std::to_string(counts.throws()) + " of " +
+                   std::to_string(options.throws) + " throws; the counts below are of those" +
                    (options.csvPath.empty() ? "" : "; no CSV written"));
     }
     printDiceReport(std::cout, loaded, counts);
