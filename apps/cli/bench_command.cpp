@@ -4,6 +4,7 @@
 
 #include "cli_options.hpp"
 #include "console.hpp"
+#include "bench_dice.hpp"
 #include "throw_batch.hpp"
 
 #include "tumble/scenario/scenario.hpp"
@@ -252,25 +253,6 @@ void printRows(const std::vector<BenchRow>& rows)
     }
 }
 
-/// Times `throws` throws of the die (seed 1) on `threads` threads, as `tumble throw` runs them,
-/// and prints one row of the dice table.
-void printDiceRow(const scenario::Scenario& die, long throws, int threads)
-{
-    std::vector<scenario::ThrowOutcome> outcomes(static_cast<std::size_t>(throws));
-    const auto start = std::chrono::steady_clock::now();
-    std::vector<std::uint8_t> finished(outcomes.size(), 0);
-    runThrows(die, 1, 0, outcomes, finished, threads, false, throws);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const long settled = std::count_if(outcomes.begin(), outcomes.end(),
-                                       [](const scenario::ThrowOutcome& outcome) {
-                                           return outcome.settled;
-                                       });
-    const double rate = static_cast<double>(throws) / seconds;
-    std::printf("%-4s %-14s %8ld %7d %10.3f %10.0f %9ld %14.1f\n", "D", "dice_cube", throws,
-                threads, seconds, rate, settled, 1e5 / rate);
-}
-
 } // namespace
 
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options)
@@ -371,10 +353,16 @@ int benchCommand(const BenchOptions& options)
         // Throughput of `tumble throw` (docs/dice.md): whole throws, each run until the die rests.
         const scenario::Scenario die =
             scenario::loadScenario(options.scenarioDir + "/dice_cube.toml", {});
-        std::printf("%-4s %-14s %8s %7s %10s %10s %9s %14s\n", "scen", "scenario", "throws",
+        std::printf("%-4s %-16s %8s %7s %10s %10s %9s %14s\n", "scen", "scenario", "throws",
                     "threads", "seconds", "throws/s", "settled", "s per 100000");
         for (const int threads : options.threads) {
             printDiceRow(die, options.throws, threads > 0 ? threads : defaultThreadCount());
+        }
+        // two dice thrown into a walled tray: the multi-dice path, throws of both dice
+        const scenario::Scenario tray =
+            scenario::loadScenario(options.scenarioDir + "/dice_two_in_tray.toml", {});
+        for (const int threads : options.threads) {
+            printTrayRow(tray, options.throws, threads > 0 ? threads : defaultThreadCount());
         }
     }
     struct rusage usage {};

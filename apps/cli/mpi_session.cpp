@@ -74,24 +74,40 @@ void MpiSession::sumToRoot(std::span<std::int64_t> counts) const
 void MpiSession::gatherToRoot(std::span<const scenario::ThrowOutcome> block,
                               std::span<scenario::ThrowOutcome> all, std::int64_t count) const
 {
+    gatherBytesToRoot(std::as_bytes(block), std::as_writable_bytes(all), count,
+                      sizeof(scenario::ThrowOutcome));
+}
+
+void MpiSession::gatherToRoot(std::span<const scenario::DieOutcome> block,
+                              std::span<scenario::DieOutcome> all, std::int64_t count,
+                              std::size_t dice) const
+{
+    gatherBytesToRoot(std::as_bytes(block), std::as_writable_bytes(all), count,
+                      sizeof(scenario::DieOutcome) * dice);
+}
+
+void MpiSession::gatherBytesToRoot(std::span<const std::byte> block, std::span<std::byte> all,
+                                   std::int64_t count, std::size_t bytesPerThrow) const
+{
 #if TUMBLE_HAS_MPI
     if (m_initialised) {
         // outcomes travel as bytes: every rank runs the same program on the same machine type
-        constexpr auto kBytes = static_cast<std::int64_t>(sizeof(scenario::ThrowOutcome));
+        const auto bytes = static_cast<std::int64_t>(bytesPerThrow);
         std::vector<int> sizes(static_cast<std::size_t>(m_size));
         std::vector<int> offsets(static_cast<std::size_t>(m_size));
         for (int r = 0; r < m_size; ++r) {
             const std::int64_t begin = count * r / m_size;
             const std::int64_t end = count * (r + 1) / m_size;
-            sizes[static_cast<std::size_t>(r)] = static_cast<int>((end - begin) * kBytes);
-            offsets[static_cast<std::size_t>(r)] = static_cast<int>(begin * kBytes);
+            sizes[static_cast<std::size_t>(r)] = static_cast<int>((end - begin) * bytes);
+            offsets[static_cast<std::size_t>(r)] = static_cast<int>(begin * bytes);
         }
-        MPI_Gatherv(block.data(), static_cast<int>(block.size_bytes()), MPI_BYTE, all.data(),
+        MPI_Gatherv(block.data(), static_cast<int>(block.size()), MPI_BYTE, all.data(),
                     sizes.data(), offsets.data(), MPI_BYTE, 0, MPI_COMM_WORLD);
         return;
     }
 #endif
     (void)count;
+    (void)bytesPerThrow;
     std::copy(block.begin(), block.end(), all.begin());
 }
 

@@ -3,6 +3,9 @@
 #pragma once
 
 #include "tumble/scenario/throw.hpp"
+#include "tumble/scenario/throw_dice.hpp"
+
+#include <cstddef>
 
 #include <cstdint>
 #include <span>
@@ -33,6 +36,10 @@ public:
     /// is the total there; ignored elsewhere).
     void gatherToRoot(std::span<const scenario::ThrowOutcome> block,
                       std::span<scenario::ThrowOutcome> all, std::int64_t count) const;
+    /// The same for throws of `dice` dice each (block and all hold dice outcomes per throw).
+    void gatherToRoot(std::span<const scenario::DieOutcome> block,
+                      std::span<scenario::DieOutcome> all, std::int64_t count,
+                      std::size_t dice) const;
     /// Whether every rank reports `ok` (a logical AND across ranks).
     [[nodiscard]] bool allOk(bool ok) const;
 
@@ -40,6 +47,9 @@ public:
     [[nodiscard]] static const char* buildDescription();
 
 private:
+    void gatherBytesToRoot(std::span<const std::byte> block, std::span<std::byte> all,
+                           std::int64_t count, std::size_t bytesPerThrow) const;
+
     int m_rank = 0;
     int m_size = 1;
     bool m_initialised = false;

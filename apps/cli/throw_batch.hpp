@@ -4,6 +4,7 @@
 
 #include "tumble/scenario/scenario.hpp"
 #include "tumble/scenario/throw.hpp"
+#include "tumble/scenario/throw_dice.hpp"
 
 #include <cstdint>
 #include <span>
@@ -24,5 +25,12 @@ std::int64_t runThrows(const scenario::Scenario& scenario, std::uint64_t seed,
                        std::int64_t firstIndex, std::span<scenario::ThrowOutcome> outcomes,
                        std::span<std::uint8_t> finished,
                        int threads, bool progress, std::int64_t totalThrows);
+
+/// The same for a scenario of several dice (scenario::runDiceBatch): `outcomes` holds one
+/// DieOutcome per die of each throw.
+std::int64_t runDiceThrows(const scenario::Scenario& scenario, std::uint64_t seed,
+                           std::int64_t firstIndex, std::span<scenario::DieOutcome> outcomes,
+                           std::span<std::uint8_t> finished, int threads, bool progress,
+                           std::int64_t totalThrows);
 
 } // namespace tumble::cli

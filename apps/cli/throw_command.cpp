@@ -6,6 +6,7 @@
 #include "mpi_session.hpp"
 #include "output_file.hpp"
 #include "throw_batch.hpp"
+#include "throw_dice_command.hpp"
 #include "throw_report.hpp"
 
 #include "tumble/scenario/scenario.hpp"
@@ -33,6 +34,9 @@ scenario::Scenario loadThrowScenario(const ThrowOptions& options)
     }
     // the engine asserts on bad bodies; report them as bad input instead
     (void)scenario::buildWorld(loaded);
+    if (!singleDieThrow(loaded)) {
+        checkDicePlacement(options, loaded);
+    }
     return loaded;
 }
 
@@ -85,7 +89,7 @@ void printHeader(const ThrowOptions& options, const scenario::Scenario& loaded, 
 CLI::App* addThrowCommand(CLI::App& app, ThrowOptions& options)
 {
     CLI::App* command = app.add_subcommand(
-        "throw", "Throw a scenario's die many times and count the face it comes to rest on");
+        "throw", "Throw a scenario's dice many times and count the faces they come to rest on");
     command->add_option("FILE", options.file, "Scenario file (TOML) with a [throw] table")
         ->required()
         ->type_name("");
@@ -161,6 +165,12 @@ int throwCommand(const ThrowOptions& options)
                                       {"--out", options.outPath}});
     const MpiSession mpi;
     const scenario::Scenario loaded = loadThrowScenario(options);
+    if (!singleDieThrow(loaded)) {
+        if (options.replay >= 0) {
+            return mpi.isRoot() ? writeDiceReplay(options, loaded) : kExitOk;
+        }
+        return throwDiceCommand(options, loaded, mpi);
+    }
     if (options.replay >= 0) {
         return mpi.isRoot() ? writeReplay(options, loaded) : kExitOk;
     }

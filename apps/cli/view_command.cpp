@@ -3,6 +3,7 @@
 #include "cli_options.hpp"
 #include "console.hpp"
 #include "output_file.hpp"
+#include "view_throw.hpp"
 
 #include "tumble/scenario/runner.hpp"
 
@@ -16,6 +17,7 @@
 #include <cstdlib>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -120,11 +122,21 @@ CLI::App* addViewCommand(CLI::App& app, ViewOptions& options)
                         "Override a scenario value, KEY=VALUE (as for run); repeatable")
         ->type_name("KEY=VALUE")
         ->allow_extra_args(false);
+    command->add_option("--throw", options.throwIndex,
+                        "Play throw I of the file's [throw] table (all its dice)")
+        ->type_name("I")
+        ->check(wholeNumberIn(0, std::numeric_limits<std::int64_t>::max()));
+    command->add_option("--seed", options.seed, "Seed of --throw's draws (default 1)")
+        ->type_name("S")
+        ->check(seedNumber());
     return command;
 }
 
-int viewCommand(const ViewOptions& options)
+int viewCommand(const ViewOptions& given)
 {
+    // --throw: the viewer plays the throw's replay file, as `tumble throw --replay` writes it
+    const ThrowViewFile throwFile(given);
+    const ViewOptions& options = throwFile.options();
     const auto size = parseSize(options.size);
     if (!size) {
         printError("--size: expected WxH with each side from " + std::to_string(kMinSide) +

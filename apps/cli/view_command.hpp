@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,10 @@ struct ViewOptions {
     bool noUi = false;
     /// "KEY=VALUE" overrides, in command-line order.
     std::vector<std::string> overrides;
+    /// --throw I: play throw I of a [throw] scenario (as --replay writes it); negative for none.
+    std::int64_t throwIndex = -1;
+    /// The seed of --throw's draws.
+    std::uint64_t seed = 1;
 };
 
 /// Declares the `view` subcommand on `app`, filling `options` when parsed.

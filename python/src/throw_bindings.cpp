@@ -50,6 +50,13 @@ py::tuple runThrows(const Scenario& loaded, std::int64_t throws, std::uint64_t s
                                       "missing: tumble throw needs a [throw] table "
                                       "(docs/scenario-format.md)");
     }
+    // the module runs the single-die model; several dice (or a region) are `tumble throw`'s
+    if (loaded.bodies.size() != 1 || !loaded.ground || loaded.throwSpec->region ||
+        loaded.throwSpec->release != scenario::ThrowRelease::Each) {
+        throw scenario::ScenarioError(scenario::SourceLocation{loaded.sourceName, 0}, "throw",
+                                      "the Python module throws one die over a [ground]; use "
+                                      "`tumble throw` for several dice or a region");
+    }
     if (throws < 1) {
         throw py::value_error("throws must be >= 1");
     }

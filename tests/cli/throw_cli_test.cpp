@@ -153,10 +153,10 @@ TEST_F(CliTest, ThrowBadValuesExitWithTwoNamingTheKey)
                         "--set: throw.height: must be >= 0");
     expectThrowBadInput({"throw", kDiceCube, "--set", "throw.max_time=0"},
                         "--set: throw.max_time: must be > 0");
-    const std::string twoBodies =
-        writeScenario("two.toml", "[ground]\n[[body]]\n[[body]]\n[throw]\nheight = 3\n");
-    expectThrowBadInput({"throw", twoBodies}, twoBodies + ":4: throw: a [throw] scenario has "
-                                                          "exactly one [[body]]");
+    const std::string twoBodies = writeScenario(
+        "two.toml", "[ground]\n[[body]]\nposition = [-5, 2, 0]\n[[body]]\n"
+                    "position = [5, 2, 0]\n[throw]\nheight = 3\n");
+    expectThrowBadInput({"throw", twoBodies}, twoBodies + ":6: throw: several dice need a region");
     const std::string unknown =
         writeScenario("unknown.toml", "[ground]\n[[body]]\n[throw]\nheight = 3\nspin = 2\n");
     expectThrowBadInput({"throw", unknown}, unknown + ":5: throw.spin: unknown key 'spin'");

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <vector>
 
 namespace tumble::scenario {
 namespace {
@@ -62,6 +63,48 @@ TEST(DiceStatistics, ChiSquarePValuesInClosedForm)
     // the tabulated 5% critical value of 5 degrees of freedom is 11.0705
     EXPECT_NEAR(chiSquarePValue(11.0705, 5), 0.05, 1e-5);
     EXPECT_EQ(chiSquarePValue(0.0, 5), 1.0);
+}
+
+TEST(DiceStatistics, FairSumOfTwoDiceIsTheTriangle)
+{
+    const std::vector<Real> two = fairSumDistribution(2);
+    ASSERT_EQ(two.size(), 11u);
+    const std::array<int, 11> ways{1, 2, 3, 4, 5, 6, 5, 4, 3, 2, 1};
+    for (std::size_t s = 0; s < ways.size(); ++s) {
+        EXPECT_DOUBLE_EQ(two[s], ways[s] / 36.0) << "sum " << s + 2;
+    }
+    // three dice: 27 of the 216 outcomes sum to 10
+    const std::vector<Real> three = fairSumDistribution(3);
+    ASSERT_EQ(three.size(), 16u);
+    EXPECT_DOUBLE_EQ(three[10 - 3], 27.0 / 216.0);
+}
+
+TEST(DiceStatistics, IndependenceOfAProductTableAndOfADiagonalOne)
+{
+    // rows (1, 2) times columns (1, 1, 2): exactly independent, X^2 = 0 on (2-1)(3-1) = 2 df
+    const std::array<std::int64_t, 6> product{10, 10, 20, 20, 20, 40};
+    const ChiSquareTest independent = chiSquareIndependence(product, 2, 3);
+    EXPECT_NEAR(independent.statistic, 0.0, 1e-12);
+    EXPECT_EQ(independent.degreesOfFreedom, 2);
+    // a diagonal 2 x 2 table of 50 and 50: X^2 = n = 100 (phi = 1), by hand
+    const std::array<std::int64_t, 4> diagonal{50, 0, 0, 50};
+    const ChiSquareTest dependent = chiSquareIndependence(diagonal, 2, 2);
+    EXPECT_NEAR(dependent.statistic, 100.0, 1e-9);
+    EXPECT_EQ(dependent.degreesOfFreedom, 1);
+    EXPECT_LT(chiSquarePValue(dependent.statistic, 1), 1e-20);
+    // an empty row is left out of the degrees of freedom
+    const std::array<std::int64_t, 6> emptyRow{0, 0, 0, 5, 7, 9};
+    EXPECT_EQ(chiSquareIndependence(emptyRow, 2, 3).degreesOfFreedom, 0);
+}
+
+TEST(DiceStatistics, GoodnessOfFitAgainstGivenProbabilities)
+{
+    // 30 and 70 against 1/4 and 3/4 of 100: (30-25)^2/25 + (70-75)^2/75 = 1 + 1/3
+    const std::array<std::int64_t, 2> counts{30, 70};
+    const std::array<Real, 2> probabilities{0.25, 0.75};
+    const ChiSquareTest test = chiSquareGoodnessOfFit(counts, probabilities);
+    EXPECT_NEAR(test.statistic, 4.0 / 3.0, 1e-12);
+    EXPECT_EQ(test.degreesOfFreedom, 1);
 }
 
 } // namespace

@@ -120,10 +120,12 @@ TEST(ReadThrow, UnknownOrientation)
                           "must be one of \"random\", \"body\""));
 }
 
-TEST(ReadThrow, MoreThanOneBody)
+TEST(ReadThrow, SeveralDiceWithoutARegionOrCluster)
 {
-    EXPECT_TRUE(failsWith("[ground]\n[[body]]\n[[body]]\n[throw]\n", "scene.toml:4: throw: ",
-                          "exactly one [[body]] (the die), got 2"));
+    // released each on its own above the origin, two dice would start inside each other
+    EXPECT_TRUE(failsWith("[ground]\n[[body]]\nposition = [-5, 2, 0]\n[[body]]\n"
+                          "position = [5, 2, 0]\n[throw]\n",
+                          "scene.toml:6: throw: ", "several dice need a region"));
 }
 
 TEST(ReadThrow, NoGround)

@@ -89,6 +89,24 @@ TEST(Capture, FrictionScenarioWithPanelsShowsTheCuboid)
     EXPECT_GT(image.cuboidFraction(centre, 12.0f), 0.6) << centre.x << ", " << centre.y;
 }
 
+TEST(Capture, AThrowOfTheTrayShowsItsDrawnDiceInTheTray)
+{
+    // view --throw I plays the replay of throw I: the tray's static bodies and the two dice
+    // where throw I releases them, so two throws give two pictures that differ
+    const PngImage three =
+        capture("dice_two_in_tray.toml", 0.0, "tray_throw_3", "--throw 3 --size 640x360 --no-ui");
+    const PngImage four =
+        capture("dice_two_in_tray.toml", 0.0, "tray_throw_4", "--throw 4 --size 640x360 --no-ui");
+    for (const PngImage* image : {&three, &four}) {
+        ASSERT_EQ(image->width(), 640);
+        ASSERT_EQ(image->height(), 360);
+        EXPECT_GT(image->distinctColours(), 50u);
+    }
+    // the dice are small in the framed scene (a few hundred pixels of 230,400): the pictures of
+    // one throw are identical, those of two throws differ where the dice are
+    EXPECT_GT(three.differingFraction(four, 0.1f), 0.0001);
+}
+
 TEST(Capture, FallingCubeMovesBetweenTwoTimes)
 {
     const PngImage before = capture("face_down_drop.toml", 0.0, "drop_0", "--size 640x360 --no-ui");

@@ -6,6 +6,7 @@
 #include "schema.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <string>
 
 namespace tumble::scenario::detail {
@@ -46,12 +47,11 @@ void checkNonNegative(const TomlReader& reader, const toml::node& node, const st
 void readRanges(const TomlReader& reader, const toml::table& table, const Scenario& scenario,
                 ThrowSpec& spec)
 {
-    const Vec3& size = scenario.bodies.front().def.shape.size;
+    const Real halfDiagonal = largestHalfDiagonal(scenario);
     ifPresent(table, "height", [&](const toml::node& node) {
         spec.height = readDrawRange(reader, node, "throw.height");
         checkNonNegative(reader, node, "throw.height", spec.height);
         // a die released lower than its half diagonal could start with a corner in the ground
-        const Real halfDiagonal = 0.5 * glm::length(size);
         if (spec.height.min < halfDiagonal) {
             reader.fail(node, "throw.height",
                         "must be at least " + formatReal(halfDiagonal) +
@@ -65,6 +65,16 @@ void readRanges(const TomlReader& reader, const toml::table& table, const Scenar
         spec.speed = readDrawRange(reader, node, "throw.speed");
         checkNonNegative(reader, node, "throw.speed", spec.speed);
         reader.checkRange(node, "throw.speed", spec.speed.max, kSpeedRange, "the maximum ");
+    });
+    ifPresent(table, "heading", [&](const toml::node& node) {
+        const DrawRange degrees = readDrawRange(reader, node, "throw.heading");
+        if (degrees.min < -360.0 || degrees.max > 360.0) {
+            reader.fail(node, "throw.heading",
+                        "must lie within [-360, 360] degrees, got [" + formatReal(degrees.min) +
+                            ", " + formatReal(degrees.max) + "]");
+        }
+        spec.heading = {degrees.min * std::numbers::pi / 180.0,
+                        degrees.max * std::numbers::pi / 180.0};
     });
     ifPresent(table, "vertical_speed", [&](const toml::node& node) {
         spec.verticalSpeed = readDrawRange(reader, node, "throw.vertical_speed");
@@ -85,6 +95,25 @@ void readRanges(const TomlReader& reader, const toml::table& table, const Scenar
     });
 }
 
+/// Checks the keys that pick the release points against the dice and the ground.
+void checkReleaseModel(const TomlReader& reader, const toml::table& table,
+                       const Scenario& scenario, const ThrowSpec& spec)
+{
+    if (spec.region && table.contains("height")) {
+        reader.fail(*table.get("height"), "throw.height",
+                    "give either height or region: the region holds the release heights");
+    }
+    if (!spec.region && !scenario.ground) {
+        reader.fail(table, "throw",
+                    "a [throw] scenario without a region needs a [ground] for the dice to land on");
+    }
+    if (!spec.region && spec.release == ThrowRelease::Each && throwDiceCount(scenario) > 1) {
+        reader.fail(table, "throw",
+                    "several dice need a region (or release = \"cluster\"): released each on "
+                    "its own above the origin they would start inside each other");
+    }
+}
+
 } // namespace
 
 void readThrow(const TomlReader& reader, const toml::table& root, Scenario& scenario)
@@ -95,19 +124,17 @@ void readThrow(const TomlReader& reader, const toml::table& root, Scenario& scen
     }
     const toml::table& table = reader.table(*node, "throw", "a table ([throw])");
     reader.checkKeys(table, "throw", kThrowKeys);
-    // the die's position and velocities are drawn, so the scene must be one die over a ground
-    if (scenario.bodies.size() != 1) {
+    // the dice are the dynamic bodies; their positions and velocities are drawn
+    if (throwDiceCount(scenario) == 0) {
         reader.fail(table, "throw",
-                    "a [throw] scenario has exactly one [[body]] (the die), got " +
-                        std::to_string(scenario.bodies.size()));
-    }
-    if (!scenario.ground) {
-        reader.fail(table, "throw", "a [throw] scenario needs a [ground] for the die to land on");
+                    "a [throw] scenario needs at least one dynamic [[body]] (a die), got none");
     }
     if (!scenario.impulses.empty()) {
         reader.fail(table, "throw", "a [throw] scenario takes no [[impulse]]");
     }
     ThrowSpec spec;
+    readRelease(reader, table, spec);
+    checkReleaseModel(reader, table, scenario, spec);
     readRanges(reader, table, scenario, spec);
     ifPresent(table, "orientation", [&](const toml::node& orientation) {
         spec.orientation = reader.choice(orientation, "throw.orientation",
@@ -121,8 +148,8 @@ void readThrow(const TomlReader& reader, const toml::table& root, Scenario& scen
                           "the number of steps max_time / dt ");
     });
     // the defaults are checked too: a tiny die or a coarse dt can make them invalid
-    if (!table.contains("height") && spec.height.min < 0.5 * glm::length(
-                                                           scenario.bodies.front().def.shape.size)) {
+    if (!spec.region && !table.contains("height") &&
+        spec.height.min < largestHalfDiagonal(scenario)) {
         reader.fail(table, "throw.height",
                     "the default [0.5, 1.0] m is lower than half the die's diagonal; give a "
                     "height");

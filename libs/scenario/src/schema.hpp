@@ -41,8 +41,11 @@ inline constexpr std::array<std::string_view, 6> kImpulseKeys{
 inline constexpr std::array<std::string_view, 12> kSpawnKeys{
     "count", "seed", "spacing", "size", "mass", "height", "orientation", "angular_speed",
     "velocity", "elasticity", "friction", "static_friction"};
-inline constexpr std::array<std::string_view, 6> kThrowKeys{
-    "height", "speed", "vertical_speed", "angular_speed", "orientation", "max_time"};
+inline constexpr std::array<std::string_view, 10> kThrowKeys{
+    "height",   "speed",   "heading",        "vertical_speed", "angular_speed",
+    "orientation", "max_time", "release", "cluster_radius", "region"};
+
+inline constexpr std::array<std::string_view, 2> kThrowRegionKeys{"min", "max"};
 
 inline constexpr std::array<std::string_view, 2> kAxisAngleKeys{"axis", "degrees"};
 
@@ -51,5 +54,7 @@ inline constexpr std::array<std::string_view, 2> kIntegratorNames{"exact", "hand
 inline constexpr std::array<std::string_view, 2> kResponseNames{"sequential", "average"};
 /// Values of throw.orientation, in the order of ThrowOrientation's enumerators.
 inline constexpr std::array<std::string_view, 2> kThrowOrientationNames{"random", "body"};
+
+inline constexpr std::array<std::string_view, 2> kThrowReleaseNames{"each", "cluster"};
 
 } // namespace tumble::scenario::detail

@@ -27,11 +27,13 @@ int throwCoreCount()
 #endif
 }
 
-std::int64_t runThrowBatch(const Scenario& scenario, std::uint64_t seed, std::int64_t firstIndex,
-                           std::span<ThrowOutcome> outcomes, std::span<std::uint8_t> finished,
-                           int threads, const ThrowBatchHooks& hooks)
+namespace {
+
+/// Runs `runOne(i)` for i in [0, count) on `threads` threads with the hooks; returns how many ran.
+template <typename RunOne>
+std::int64_t runBatch(std::int64_t count, std::span<std::uint8_t> finished, int threads,
+                      const ThrowBatchHooks& hooks, const RunOne& runOne)
 {
-    const auto count = static_cast<std::int64_t>(outcomes.size());
     std::atomic<std::int64_t> done{0};
     (void)threads;
 
@@ -43,9 +45,7 @@ std::int64_t runThrowBatch(const Scenario& scenario, std::uint64_t seed, std::in
         if (hooks.stopRequested && hooks.stopRequested()) {
             continue;
         }
-        const std::uint64_t index = static_cast<std::uint64_t>(firstIndex + i);
-        outcomes[static_cast<std::size_t>(i)] =
-            runThrow(scenario, drawThrow(scenario, seed, index));
+        runOne(i);
         finished[static_cast<std::size_t>(i)] = 1;
         const std::int64_t finishedCount = done.fetch_add(1, std::memory_order_relaxed) + 1;
 #if TUMBLE_HAS_OPENMP
@@ -58,6 +58,33 @@ std::int64_t runThrowBatch(const Scenario& scenario, std::uint64_t seed, std::in
         }
     }
     return done.load();
+}
+
+} // namespace
+
+std::int64_t runThrowBatch(const Scenario& scenario, std::uint64_t seed, std::int64_t firstIndex,
+                           std::span<ThrowOutcome> outcomes, std::span<std::uint8_t> finished,
+                           int threads, const ThrowBatchHooks& hooks)
+{
+    return runBatch(static_cast<std::int64_t>(outcomes.size()), finished, threads, hooks,
+                    [&](std::int64_t i) {
+                        const auto index = static_cast<std::uint64_t>(firstIndex + i);
+                        outcomes[static_cast<std::size_t>(i)] =
+                            runThrow(scenario, drawThrow(scenario, seed, index));
+                    });
+}
+
+std::int64_t runDiceBatch(const Scenario& scenario, std::uint64_t seed, std::int64_t firstIndex,
+                          std::span<DieOutcome> outcomes, std::span<std::uint8_t> finished,
+                          int threads, const ThrowBatchHooks& hooks)
+{
+    const std::size_t dice = diceOf(scenario).size();
+    return runBatch(static_cast<std::int64_t>(finished.size()), finished, threads, hooks,
+                    [&](std::int64_t i) {
+                        const auto index = static_cast<std::uint64_t>(firstIndex + i);
+                        runDiceThrow(scenario, seed, index,
+                                     outcomes.subspan(static_cast<std::size_t>(i) * dice, dice));
+                    });
 }
 
 } // namespace tumble::scenario

@@ -5,7 +5,6 @@
 #include "tumble/scenario/random_draws.hpp"
 
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 
 namespace tumble::scenario {
@@ -50,7 +49,8 @@ ThrowState drawThrow(const Scenario& scenario, std::uint64_t seed, std::uint64_t
     state.orientation = spec.orientation == ThrowOrientation::Random
                             ? drawn
                             : scenario.bodies.front().def.orientation;
-    const Real heading = 2.0 * std::numbers::pi * generator.unit();
+    // the default heading [0, 2 pi] gives 2 pi u exactly, as before headings could be given
+    const Real heading = uniformIn(generator, spec.heading);
     const Real speed = uniformIn(generator, spec.speed);
     const Real verticalSpeed = uniformIn(generator, spec.verticalSpeed);
     state.velocity = Vec3(speed * std::cos(heading), verticalSpeed, speed * std::sin(heading));

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 namespace tumble::scenario {
 
@@ -28,5 +29,25 @@ Real chiSquareUniformStatistic(std::span<const std::int64_t> counts);
 
 /// P(X >= statistic) for X chi-square distributed with `degreesOfFreedom` (>= 1) degrees.
 Real chiSquarePValue(Real statistic, int degreesOfFreedom);
+
+/// A chi-square statistic and its degrees of freedom (0: the test does not apply).
+struct ChiSquareTest {
+    Real statistic = 0.0;
+    int degreesOfFreedom = 0;
+};
+
+/// Pearson's test of independence of a rows x columns table of counts (row-major): expected
+/// counts E_ij = row_i column_j / total (docs/dice.md, (D.3)); rows and columns with no count are
+/// left out, and the degrees of freedom are (rows used - 1)(columns used - 1).
+ChiSquareTest chiSquareIndependence(std::span<const std::int64_t> table, int rows, int columns);
+
+/// The exact distribution of the sum of `dice` fair six-sided dice: element s - dice is
+/// P(sum = s), for s from dice to 6 dice (the convolution of the uniform distribution).
+std::vector<Real> fairSumDistribution(int dice);
+
+/// Pearson's statistic sum (O - E)^2 / E of `counts` against E_i = total p_i; cells with p_i = 0
+/// are skipped, and the degrees of freedom are the cells used minus 1.
+ChiSquareTest chiSquareGoodnessOfFit(std::span<const std::int64_t> counts,
+                                     std::span<const Real> probabilities);
 
 } // namespace tumble::scenario

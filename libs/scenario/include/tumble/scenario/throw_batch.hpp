@@ -5,6 +5,7 @@
 
 #include "tumble/scenario/scenario.hpp"
 #include "tumble/scenario/throw.hpp"
+#include "tumble/scenario/throw_dice.hpp"
 
 #include <cstdint>
 #include <functional>
@@ -36,5 +37,11 @@ struct ThrowBatchHooks {
 std::int64_t runThrowBatch(const Scenario& scenario, std::uint64_t seed, std::int64_t firstIndex,
                            std::span<ThrowOutcome> outcomes, std::span<std::uint8_t> finished,
                            int threads, const ThrowBatchHooks& hooks = {});
+
+/// The same for a scenario of several dice: throw firstIndex + i fills outcomes[i * n ..
+/// i * n + n - 1], n = diceOf(scenario).size() (runDiceThrow).
+std::int64_t runDiceBatch(const Scenario& scenario, std::uint64_t seed, std::int64_t firstIndex,
+                          std::span<DieOutcome> outcomes, std::span<std::uint8_t> finished,
+                          int threads, const ThrowBatchHooks& hooks = {});
 
 } // namespace tumble::scenario
