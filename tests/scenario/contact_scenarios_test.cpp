@@ -60,6 +60,35 @@ TEST(ContactScenarios, TheStackOfTenStandsWithinAMillimetre)
     }
 }
 
+TEST(ContactScenarios, TheStackOfTwentyStandsWithinAMillimetre)
+{
+    const Finished run("stack_20.toml");
+    ASSERT_EQ(run.runner.bodies().size(), 20u);
+    for (std::size_t i = 0; i < run.runner.bodies().size(); ++i) {
+        EXPECT_LT(sideways(run.startPositions[i], run.body(i).position), 1e-3) << i;
+    }
+    EXPECT_NEAR(run.body(19).position.y, 19.5, 1e-3);
+}
+
+TEST(ContactScenarios, ThePileOfOneHundredSettlesOnTheGroundWithNothingFlyingOff)
+{
+    const Finished run("pile_100.toml");
+    ASSERT_EQ(run.runner.bodies().size(), 100u);
+    const WorldSettings& settings = run.runner.world().settings();
+    for (std::size_t i = 0; i < run.runner.bodies().size(); ++i) {
+        const Body& brick = run.body(i);
+        // at rest, or nearly: still within ten times the sleep thresholds
+        EXPECT_TRUE(brick.asleep ||
+                    (glm::length(brick.linearVelocity) < 10.0 * settings.sleepLinearSpeed &&
+                     glm::length(brick.angularVelocity) < 10.0 * settings.sleepAngularSpeed))
+            << i;
+        // a 2 x 6 x 2 brick rests with its centre at least its half width (1 m) up
+        EXPECT_GT(brick.position.y, 1.0 - 1e-3) << i;
+        // the pile spans 23 m by 6 m; a brick that tips off its end lands within a brick length
+        EXPECT_LT(sideways(run.startPositions[i], brick.position), 12.0) << i;
+    }
+}
+
 TEST(ContactScenarios, ThePyramidOf55SettlesAndStands)
 {
     const Finished run("pyramid_55.toml");
