@@ -62,8 +62,11 @@ double referenceNs(const std::vector<BenchRow>& rows, std::size_t first, bool sl
 }
 
 /// The peers' rows of a scene, each with its ratio to `reference`, appended to `rows`.
-void addPeerRows(const scenario::Scenario& loaded, const std::string& name, double reference,
-                 int leastRuns, BenchTables& tables, std::vector<BenchRow>& rows)
+/// Without the peers built in, benchCommand refuses --peers before any scene runs.
+void addPeerRows([[maybe_unused]] const scenario::Scenario& loaded,
+                 [[maybe_unused]] const std::string& name, [[maybe_unused]] double reference,
+                 [[maybe_unused]] int leastRuns, [[maybe_unused]] BenchTables& tables,
+                 [[maybe_unused]] std::vector<BenchRow>& rows)
 {
 #ifdef TUMBLE_HAS_PEERS
     for (BenchRow& row : runPeers(loaded, name, tables.peerSettings, leastRuns)) {
@@ -72,8 +75,6 @@ void addPeerRows(const scenario::Scenario& loaded, const std::string& name, doub
         }
         rows.push_back(row);
     }
-#else
-    (void)loaded, (void)name, (void)reference, (void)leastRuns, (void)tables, (void)rows;
 #endif
 }
 

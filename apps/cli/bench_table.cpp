@@ -25,12 +25,12 @@ std::string cpuModel()
     return "unknown CPU";
 }
 
-/// The ratio column: empty for tumble's reference rows.
-std::string ratioText(const BenchRow& row)
+/// The ratio column: empty for tumble's reference rows; `format` prints the number.
+std::string ratioText(const BenchRow& row, const char* format = "%.2f")
 {
     char ratio[32] = "";
     if (row.ratio > 0.0) {
-        std::snprintf(ratio, sizeof ratio, "%.2f", row.ratio);
+        std::snprintf(ratio, sizeof ratio, format, row.ratio);
     }
     return ratio;
 }
@@ -70,7 +70,8 @@ void printRows(const std::vector<BenchRow>& rows)
 
 void printContactRows(const std::vector<BenchRow>& rows)
 {
-    std::printf("%-7s %-14s %6s %7s %6s %4s %9s %12s %13s %7s %10s %10s %6s\n", "scen", "engine",
+    // three significant digits in the ratio: a peer can be hundreds of times faster here
+    std::printf("%-7s %-14s %6s %7s %6s %4s %9s %12s %13s %7s %10s %10s %8s\n", "scen", "engine",
                 "bodies", "threads", "steps", "runs", "ms/step", "ns/body-step", "contacts/step",
                 "at rest", "bytes/body", "sideways m", "ratio");
     for (const BenchRow& row : rows) {
@@ -83,12 +84,12 @@ void printContactRows(const std::vector<BenchRow>& rows)
         if (row.contactsPerStep >= 0.0) {
             std::snprintf(contacts, sizeof contacts, "%.1f", row.contactsPerStep);
         }
-        std::printf("%-7s %-14s %6d %7d %6ld %4d %9.3f %12.1f %13s %7ld %10lld %10.4f %6s\n",
+        std::printf("%-7s %-14s %6d %7d %6ld %4d %9.3f %12.1f %13s %7ld %10lld %10.4f %8s\n",
                     row.scenario.c_str(), row.engine.c_str(), row.bodies, row.threads, row.steps,
                     row.runs, 1e3 * row.stepSeconds / static_cast<double>(row.steps),
                     row.nsPerBodyStep(), contacts, row.bodiesAtRest,
                     row.heapBytesAtEnd / std::max(1, row.bodies), row.maxSideways,
-                    ratioText(row).c_str());
+                    ratioText(row, "%.3g").c_str());
     }
 }
 
