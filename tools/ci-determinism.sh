@@ -14,12 +14,22 @@ cmake -S . -B build-o2 "${common[@]}" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLA
 cmake --build build-o0 --target tumble_cli
 cmake --build build-o2 --target tumble_cli
 
+# pile_100.toml (benchmark S5) steps for about two minutes over its 10 s with -O2 and far longer
+# with -O0; its first 0.5 s bring the lower layers down onto each other, so the comparison runs
+# those (issue 16).
+declare -A shortened=([scenarios/pile_100.toml]=0.5)
+
 status=0
 count=0
 for scenario in scenarios/*.toml; do
-    o0=$(build-o0/apps/cli/tumble run "$scenario" --quiet --hash --threads 1 | grep '^state hash: ')
-    o2=$(build-o2/apps/cli/tumble run "$scenario" --quiet --hash --threads 1 | grep '^state hash: ')
-    o2t2=$(build-o2/apps/cli/tumble run "$scenario" --quiet --hash --threads 2 | grep '^state hash: ')
+    duration=()
+    if [[ -n "${shortened[$scenario]:-}" ]]; then
+        duration=(--duration "${shortened[$scenario]}")
+    fi
+    run=(run "$scenario" --quiet --hash "${duration[@]}")
+    o0=$(build-o0/apps/cli/tumble "${run[@]}" --threads 1 | grep '^state hash: ')
+    o2=$(build-o2/apps/cli/tumble "${run[@]}" --threads 1 | grep '^state hash: ')
+    o2t2=$(build-o2/apps/cli/tumble "${run[@]}" --threads 2 | grep '^state hash: ')
     count=$((count + 1))
     if [[ "$o0" != "$o2" || "$o2" != "$o2t2" ]]; then
         echo "ci-determinism: $scenario differs: -O0 $o0, -O2 $o2, -O2 on 2 threads $o2t2" >&2

@@ -2,6 +2,8 @@
 // the ratio of each peer's cost per body-step to tumble's measured in the same run.
 #include "bench_command.hpp"
 
+#include "bench_runs.hpp"
+#include "bench_table.hpp"
 #include "cli_options.hpp"
 #include "console.hpp"
 #include "bench_dice.hpp"
@@ -10,247 +12,163 @@
 #include "tumble/scenario/scenario.hpp"
 #include "tumble/scenario/throw.hpp"
 
-#ifdef TUMBLE_HAS_PEERS
-#include "peer.hpp"
-#endif
-
-#include <malloc.h>
 #include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
 namespace tumble::cli {
 
 namespace {
 
-/// A row's stepping is timed again until the runs add up to this much stepping, at least
-/// kLeastRuns and at most kMostRuns times, and the row reports the median: a single run of S1
-/// lasts about a millisecond, and the first one in a process also pays for cold caches and page
-/// faults; a large scene's single run took whatever the shared machine gave it that second (a
-/// two-thread row of S4 with 1000 bodies measured 1.4 to 1.9 times the one-thread row's speed
-/// from run to run, 1.87 as the best of five), and three runs let the median drop one outlier.
-constexpr double kTimingBudgetSeconds = 0.5;
-constexpr int kLeastRuns = 3;
-constexpr int kMostRuns = 25;
+/// A single run of the pyramid or of S5 steps for one to two minutes in tumble today: one run
+/// per row, so that `--scenes S5,pyramid` stays a matter of minutes with the peers.
+constexpr int kSlowSceneLeastRuns = 1;
 
-/// The median of the stepping times of repeated runs: `runOnce` does one run and returns its
-/// stepping time, s.
-template <typename RunOnce>
-double medianStepSeconds(RunOnce runOnce, int& runs)
-{
-    std::vector<double> times;
-    double total = 0.0;
-    do {
-        times.push_back(runOnce());
-        total += times.back();
-    } while ((total < kTimingBudgetSeconds || static_cast<int>(times.size()) < kLeastRuns) &&
-             static_cast<int>(times.size()) < kMostRuns);
-    runs = static_cast<int>(times.size());
-    std::sort(times.begin(), times.end());
-    const std::size_t middle = times.size() / 2;
-    return times.size() % 2 == 1 ? times[middle] : 0.5 * (times[middle - 1] + times[middle]);
-}
+/// The scenes `--scenes` accepts; S5 and the pyramid are left out of the default.
+const std::vector<std::string> kSceneNames{"S1", "S4", "S5", "stack20", "pyramid"};
 
-/// One row of the table.
-struct BenchRow {
-    std::string scenario;
-    std::string engine;
-    int bodies = 0;
-    /// Threads tumble used; peers step on one.
-    int threads = 1;
-    long steps = 0;
-    /// Median stepping time over `runs` runs.
-    double stepSeconds = 0.0;
-    int runs = 1;
-    long bodiesAtRest = 0;
-    long long heapBytes = 0;
-    /// Peer's ns per body-step over tumble's on one thread, for the same scenario; 0 for tumble.
-    double ratio = 0.0;
-    std::string note;
-
-    [[nodiscard]] double nsPerBodyStep() const
-    {
-        return 1e9 * stepSeconds / (static_cast<double>(steps) * bodies);
-    }
+/// The rows of one run and what they share.
+struct BenchTables {
+    std::vector<BenchRow> independent;
+    std::vector<BenchRow> contact;
+    std::vector<std::string> peerSettings;
 };
 
-/// Heap bytes in use (glibc): the small-block arena plus mmapped blocks.
-long long heapInUse()
+/// The overrides every scenario gets: the simulated time, when --duration is given.
+std::vector<std::string> durationOverrides(const BenchOptions& options)
 {
-    const struct mallinfo2 info = mallinfo2();
-    return static_cast<long long>(info.uordblks + info.hblkhd);
-}
-
-long stepCount(const scenario::Scenario& loaded)
-{
-    return std::lround(loaded.duration / loaded.dt);
-}
-
-/// tumble on `loaded`: the world is built outside the timing, then stepped `steps` times.
-BenchRow runTumble(const scenario::Scenario& loaded, const std::string& name, int threads,
-                   bool sleep = true)
-{
-    BenchRow row;
-    row.scenario = name;
-    row.engine = sleep ? "tumble" : "tumble nosleep";
-    row.bodies = static_cast<int>(loaded.bodies.size());
-    row.threads = threads;
-    row.steps = stepCount(loaded);
-    scenario::Scenario configured = loaded;
-    configured.settings.threads = threads;
-    configured.settings.allowSleep = sleep;
-    bool first = true;
-    row.stepSeconds = medianStepSeconds(
-        [&] {
-            const long long heapBefore = heapInUse();
-            scenario::BuiltWorld built = scenario::buildWorld(configured);
-            const long long heapBytes = heapInUse() - heapBefore;
-            const auto start = std::chrono::steady_clock::now();
-            for (long i = 0; i < row.steps; ++i) {
-                built.world.step(loaded.dt);
-            }
-            const double seconds =
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            if (first) {
-                // Every run is the same to the bit: the first one's memory and rest count.
-                first = false;
-                row.heapBytes = heapBytes;
-                // With sleep off a body at rest stays awake; the rest test (7.1) still counts it.
-                const WorldSettings& settings = built.world.settings();
-                for (const BodyId id : built.bodies) {
-                    const Body& body = built.world.body(id);
-                    row.bodiesAtRest += body.asleep || body.slowTime >= settings.sleepTime ? 1 : 0;
-                }
-            }
-            return seconds;
-        },
-        row.runs);
-    return row;
-}
-
-#ifdef TUMBLE_HAS_PEERS
-bench::PeerScene peerScene(const scenario::Scenario& loaded)
-{
-    bench::PeerScene scene;
-    for (const scenario::BodySpec& spec : loaded.bodies) {
-        const BodyDef& def = spec.def;
-        bench::PeerBody body{};
-        for (int k = 0; k < 3; ++k) {
-            body.size[k] = def.shape.size[k];
-            body.position[k] = def.position[k];
-            body.velocity[k] = def.linearVelocity[k];
-            body.angularVelocity[k] = def.angularVelocity[k];
-            scene.gravity[k] = loaded.settings.gravity[k];
-        }
-        body.orientation[0] = def.orientation.w;
-        body.orientation[1] = def.orientation.x;
-        body.orientation[2] = def.orientation.y;
-        body.orientation[3] = def.orientation.z;
-        body.mass = def.mass;
-        body.restitution = def.material.restitution;
-        body.friction = def.material.friction;
-        scene.bodies.push_back(body);
+    if (options.duration <= 0.0) {
+        return {};
     }
-    scene.groundHeight = loaded.ground ? loaded.ground->height : -1e9;
-    scene.dt = loaded.dt;
-    scene.steps = stepCount(loaded);
-    return scene;
+    return {"world.duration=" + formatFull(options.duration)};
 }
 
-std::vector<BenchRow> runPeers(const scenario::Scenario& loaded, const std::string& name,
-                               std::vector<std::string>& settingsSeen)
+/// tumble's ns per body-step on one thread (or the first thread count timed) among
+/// rows[first..], sleeping as `sleep` says: what the ratios are taken against.
+double referenceNs(const std::vector<BenchRow>& rows, std::size_t first, bool sleep)
 {
-    std::vector<BenchRow> rows;
-    const bench::PeerScene scene = peerScene(loaded);
-    for (const std::string& peer : bench::availablePeers()) {
-        BenchRow row;
-        row.scenario = name;
-        row.engine = peer;
-        row.bodies = static_cast<int>(loaded.bodies.size());
-        row.steps = scene.steps;
-        try {
-            // The first run's memory (later runs may reuse what it freed) and rest count.
-            std::optional<bench::PeerResult> first;
-            row.stepSeconds = medianStepSeconds(
-                [&] {
-                    const bench::PeerResult result = bench::runPeer(peer, scene);
-                    if (!first) {
-                        first = result;
-                    }
-                    return result.stepSeconds;
-                },
-                row.runs);
-            const bench::PeerResult& result = *first;
-            row.bodiesAtRest = result.bodiesAtRest;
-            row.heapBytes = result.heapBytes;
-            const std::string line = result.engine + ": " + result.settings;
-            if (std::find(settingsSeen.begin(), settingsSeen.end(), line) == settingsSeen.end()) {
-                settingsSeen.push_back(line);
-            }
-        } catch (const bench::PeerCapacityError& error) {
-            row.note = std::string("cannot hold the scene: ") + error.what();
+    const std::string engine = sleep ? "tumble" : "tumble nosleep";
+    std::optional<double> reference;
+    for (std::size_t i = first; i < rows.size(); ++i) {
+        if (rows[i].engine == engine && (rows[i].threads == 1 || !reference)) {
+            reference = rows[i].nsPerBodyStep();
+        }
+    }
+    return reference.value_or(0.0);
+}
+
+/// The peers' rows of a scene, each with its ratio to `reference`, appended to `rows`.
+/// Without the peers built in, benchCommand refuses --peers before any scene runs.
+void addPeerRows([[maybe_unused]] const scenario::Scenario& loaded,
+                 [[maybe_unused]] const std::string& name, [[maybe_unused]] double reference,
+                 [[maybe_unused]] int leastRuns, [[maybe_unused]] BenchTables& tables,
+                 [[maybe_unused]] std::vector<BenchRow>& rows)
+{
+#ifdef TUMBLE_HAS_PEERS
+    for (BenchRow& row : runPeers(loaded, name, tables.peerSettings, leastRuns)) {
+        if (row.note.empty() && reference > 0.0) {
+            row.ratio = row.nsPerBodyStep() / reference;
         }
         rows.push_back(row);
     }
-    return rows;
-}
 #endif
+}
 
-/// "model name" of the first CPU in /proc/cpuinfo, or "unknown CPU".
-std::string cpuModel()
+/// A scene of bodies that only touch the ground (S1, S4): tumble at each thread count with
+/// sleeping on, once with it off, then the peers.
+void addIndependentScene(const scenario::Scenario& loaded, const std::string& name,
+                         const BenchOptions& options, BenchTables& tables)
 {
-    std::ifstream cpuinfo("/proc/cpuinfo");
-    std::string line;
-    while (std::getline(cpuinfo, line)) {
-        if (line.starts_with("model name")) {
-            const std::size_t colon = line.find(':');
-            return colon == std::string::npos ? line : line.substr(colon + 2);
+    std::vector<BenchRow>& rows = tables.independent;
+    const std::size_t first = rows.size();
+    for (const int threads : options.threads) {
+        rows.push_back(runTumble(loaded, name, threads, true));
+    }
+    // The handout drop at tumble run's default (threads = 0, one per core) beside one thread:
+    // a world of one body must not pay for threads, so the ratio shows a regression such as
+    // reading the core count from sysfs on every step (issue 14, item 1).
+    const bool defaultRow = name == "S1";
+    if (defaultRow && std::find(options.threads.begin(), options.threads.end(), 0) ==
+                          options.threads.end()) {
+        rows.push_back(runTumble(loaded, name, 0, true));
+    }
+    // The same with sleeping off: every body is stepped to the end, resting or not.
+    rows.push_back(runTumble(loaded, name, options.threads.front(), false));
+    const double reference = referenceNs(rows, first, true);
+    // the default-threads row of a one-body scene against the one-thread row (1.00: no cost)
+    for (std::size_t i = first; i < rows.size() && defaultRow; ++i) {
+        if (rows[i].engine == "tumble" && rows[i].threads == 0) {
+            rows[i].ratio = rows[i].nsPerBodyStep() / reference;
         }
     }
-    return "unknown CPU";
-}
-
-void printMachine()
-{
-    std::printf("machine: %s, %u hardware threads; compiler %s; %s build\n", cpuModel().c_str(),
-                std::thread::hardware_concurrency(), __VERSION__,
-#ifdef NDEBUG
-                "optimised"
-#else
-                "debug (timings not representative)"
-#endif
-    );
-}
-
-void printRows(const std::vector<BenchRow>& rows)
-{
-    std::printf("%-4s %-14s %6s %7s %8s %5s %12s %14s %9s %11s %10s\n", "scen", "engine",
-                "bodies", "threads", "steps", "runs", "us/step", "ns/body-step", "at rest",
-                "bytes/body", "ratio");
-    for (const BenchRow& row : rows) {
-        if (!row.note.empty()) {
-            std::printf("%-4s %-14s %6d %7s  %s\n", row.scenario.c_str(), row.engine.c_str(),
-                        row.bodies, "-", row.note.c_str());
-            continue;
-        }
-        char ratio[32] = "";
-        if (row.ratio > 0.0) {
-            std::snprintf(ratio, sizeof ratio, "%.2f", row.ratio);
-        }
-        std::printf("%-4s %-14s %6d %7d %8ld %5d %12.2f %14.1f %9ld %11lld %10s\n",
-                    row.scenario.c_str(), row.engine.c_str(), row.bodies, row.threads, row.steps,
-                    row.runs, 1e6 * row.stepSeconds / static_cast<double>(row.steps),
-                    row.nsPerBodyStep(),
-                    row.bodiesAtRest, row.heapBytes / std::max(1, row.bodies), ratio);
+    if (options.peers) {
+        addPeerRows(loaded, name, reference, kLeastRuns, tables, rows);
     }
+    std::fflush(stdout);
+}
+
+/// A scene of bodies pressing on each other (S5, the stack, the pyramid): tumble at each thread
+/// count with the file's sleeping, once more with sleeping off where the file has it on, then
+/// the peers with the file's sleeping.
+void addContactScene(const scenario::Scenario& loaded, const std::string& name,
+                     const BenchOptions& options, int leastRuns, BenchTables& tables)
+{
+    std::vector<BenchRow>& rows = tables.contact;
+    const std::size_t first = rows.size();
+    const bool sleep = loaded.settings.allowSleep;
+    for (const int threads : options.threads) {
+        rows.push_back(runTumble(loaded, name, threads, sleep, leastRuns));
+    }
+    if (sleep) {
+        rows.push_back(runTumble(loaded, name, options.threads.front(), false, leastRuns));
+    }
+    if (options.peers) {
+        addPeerRows(loaded, name, referenceNs(rows, first, sleep), leastRuns, tables, rows);
+    }
+    std::fflush(stdout);
+}
+
+bool wanted(const BenchOptions& options, const std::string& scene)
+{
+    return std::find(options.scenes.begin(), options.scenes.end(), scene) !=
+           options.scenes.end();
+}
+
+/// Every scene `--scenes` names, in the order of kSceneNames.
+BenchTables runScenes(const BenchOptions& options)
+{
+    BenchTables tables;
+    const std::vector<std::string> overrides = durationOverrides(options);
+    const auto load = [&](const std::string& path, std::vector<std::string> extra = {}) {
+        extra.insert(extra.begin(), overrides.begin(), overrides.end());
+        return scenario::loadScenario(path, extra);
+    };
+    const std::string& dir = options.scenarioDir;
+    if (wanted(options, "S1")) {
+        addIndependentScene(load(dir + "/part3_task4_friction.toml"), "S1", options, tables);
+    }
+    for (const int bodies : wanted(options, "S4") ? options.bodies : std::vector<int>{}) {
+        const std::string count = "spawn[0].count=" + std::to_string(bodies);
+        addIndependentScene(load(dir + "/s4_tumbling_cuboids.toml", {count}), "S4", options,
+                            tables);
+    }
+    if (wanted(options, "S5")) {
+        addContactScene(load(dir + "/pile_100.toml"), "S5", options, kSlowSceneLeastRuns,
+                        tables);
+    }
+    if (wanted(options, "stack20")) {
+        addContactScene(load(dir + "/stack_20.toml"), "stack20", options, kLeastRuns, tables);
+    }
+    if (wanted(options, "pyramid")) {
+        addContactScene(load(options.benchSceneDir + "/pyramid_1240.toml"), "pyramid", options,
+                        kSlowSceneLeastRuns, tables);
+    }
+    return tables;
 }
 
 } // namespace
@@ -259,13 +177,18 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options)
 {
     CLI::App* command = app.add_subcommand(
         "bench", "Time the benchmark scenarios in tumble (and the peer engines with --peers)");
+    command->add_option("--scenes", options.scenes,
+                        "Scenes to time (default S1,S4,stack20; S5 and pyramid take minutes)")
+        ->delimiter(',')
+        ->check(CLI::IsMember(kSceneNames));
     command->add_option("--bodies", options.bodies, "Body counts of S4 (default 100,1000,4000)")
         ->delimiter(',')
         ->check(wholeNumberIn(1, 1000000));
     command->add_option("--threads", options.threads, "Thread counts for tumble (default 1,2)")
         ->delimiter(',')
         ->check(wholeNumberIn(0, kMaxThreads, " (one per core)"));
-    command->add_option("--duration", options.duration, "Simulated time of each scenario, s")
+    command->add_option("--duration", options.duration,
+                        "Simulated time of each scenario, s (default: each file's own)")
         ->check(positiveNumber());
     command->add_flag("--peers", options.peers,
                       "Also run Bullet, ODE and MuJoCo (those built in) on the same bodies");
@@ -274,15 +197,17 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options)
         ->check(wholeNumberIn(0, 100000000));
     options.scenarioDir = TUMBLE_SCENARIO_DIR;
     command->add_option("--scenarios", options.scenarioDir,
-                        "Folder with part3_task4_friction.toml, s4_tumbling_cuboids.toml and "
-                        "dice_cube.toml");
+                        "Folder with part3_task4_friction.toml, s4_tumbling_cuboids.toml, "
+                        "pile_100.toml, stack_20.toml and dice_cube.toml");
+    options.benchSceneDir = TUMBLE_BENCH_SCENE_DIR;
+    command->add_option("--bench-scenes", options.benchSceneDir,
+                        "Folder with pyramid_1240.toml");
     return command;
 }
 
 int benchCommand(const BenchOptions& options)
 {
     printMachine();
-    std::vector<std::string> peerSettings;
 #ifndef TUMBLE_HAS_PEERS
     if (options.peers) {
         printError("--peers: this tumble was built without the peer engines "
@@ -290,63 +215,17 @@ int benchCommand(const BenchOptions& options)
         return kExitBadInput;
     }
 #endif
-    const std::string duration = "world.duration=" + formatFull(options.duration);
-    std::vector<BenchRow> rows;
-    const auto addScenario = [&](const scenario::Scenario& loaded, const std::string& name) {
-        const std::size_t first = rows.size();
-        for (const int threads : options.threads) {
-            rows.push_back(runTumble(loaded, name, threads));
-        }
-        // The handout drop at tumble run's default (threads = 0, one per core) beside one thread:
-        // a world of one body must not pay for threads, so the ratio shows a regression such as
-        // reading the core count from sysfs on every step (issue 14, item 1).
-        const bool defaultRow = name == "S1";
-        if (defaultRow && std::find(options.threads.begin(), options.threads.end(), 0) ==
-                           options.threads.end()) {
-            rows.push_back(runTumble(loaded, name, 0));
-        }
-        // The same with sleeping off: every body is stepped to the end, resting or not.
-        rows.push_back(runTumble(loaded, name, options.threads.front(), false));
-        // The reference for the ratios: tumble on one thread, or the first thread count timed.
-        std::optional<double> reference;
-        for (std::size_t i = first; i < rows.size(); ++i) {
-            if (rows[i].engine == "tumble" && (rows[i].threads == 1 || !reference)) {
-                reference = rows[i].nsPerBodyStep();
-            }
-        }
-        // the default-threads row of a one-body scene against the one-thread row (1.00: no cost)
-        for (std::size_t i = first; i < rows.size() && defaultRow; ++i) {
-            if (rows[i].engine == "tumble" && rows[i].threads == 0) {
-                rows[i].ratio = rows[i].nsPerBodyStep() / *reference;
-            }
-        }
-#ifdef TUMBLE_HAS_PEERS
-        if (options.peers) {
-            for (BenchRow& row : runPeers(loaded, name, peerSettings)) {
-                if (row.note.empty()) {
-                    row.ratio = row.nsPerBodyStep() / *reference;
-                }
-                rows.push_back(row);
-            }
-        }
-#endif
-        std::fflush(stdout);
-    };
-    const std::vector<std::string> s1Overrides{duration};
-    addScenario(scenario::loadScenario(options.scenarioDir + "/part3_task4_friction.toml",
-                                       s1Overrides),
-                "S1");
-    for (const int bodies : options.bodies) {
-        const std::vector<std::string> s4Overrides{duration,
-                                                   "spawn[0].count=" + std::to_string(bodies)};
-        addScenario(scenario::loadScenario(options.scenarioDir + "/s4_tumbling_cuboids.toml",
-                                           s4Overrides),
-                    "S4");
+    const BenchTables tables = runScenes(options);
+    if (!tables.independent.empty()) {
+        printRows(tables.independent);
     }
-    printRows(rows);
-    std::printf("ratio: a peer's ns/body-step over tumble's on one thread; for tumble at threads "
-                "0 (one per core, tumble run's default), its own over one thread's\n");
-    for (const std::string& line : peerSettings) {
+    if (!tables.contact.empty()) {
+        printContactRows(tables.contact);
+    }
+    std::printf("ratio: a peer's ns/body-step over tumble's on one thread (with the scene's "
+                "sleeping); for tumble at threads 0 (one per core, tumble run's default), its own "
+                "over one thread's\n");
+    for (const std::string& line : tables.peerSettings) {
         std::printf("settings of %s\n", line.c_str());
     }
     if (options.throws > 0) {

@@ -88,12 +88,15 @@ void build(BulletWorld& bw, const PeerScene& scene) {
         auto rigid = std::make_unique<btRigidBody>(info);
         rigid->setLinearVelocity(vec(body.velocity));
         rigid->setAngularVelocity(vec(body.angularVelocity));
+        if (!scene.sleep) {
+            rigid->setActivationState(DISABLE_DEACTIVATION);
+        }
         bw.world->addRigidBody(rigid.get());
         bw.bodies.push_back(std::move(rigid));
     }
 }
 
-std::string describe(const BulletWorld& bw) {
+std::string describe(const BulletWorld& bw, bool sleep) {
     const btContactSolverInfo& info = bw.world->getSolverInfo();
     const btScalar linearSleep =
         bw.bodies.empty() ? btScalar(0.8) : bw.bodies.front()->getLinearSleepingThreshold();
@@ -111,8 +114,14 @@ std::string describe(const BulletWorld& bw) {
         << "extents), "
         << (sizeof(btScalar) == sizeof(double) ? "double" : "single")
         << " precision; materials multiply (ground friction 1, restitution 1); "
-        << "stepSimulation(dt, 0, dt); deactivation on: sleep below " << linearSleep << " m/s and "
-        << angularSleep << " rad/s for " << gDeactivationTime << " s";
+        << "stepSimulation(dt, 0, dt); ";
+    if (sleep) {
+        out << "deactivation on: sleep below " << linearSleep << " m/s and " << angularSleep
+            << " rad/s for " << gDeactivationTime << " s";
+    } else {
+        out << "deactivation off (DISABLE_DEACTIVATION): at rest means |v|, |w| < "
+            << kAtRestSpeed;
+    }
     return out.str();
 }
 
@@ -140,16 +149,22 @@ PeerResult runBullet(const PeerScene& scene) {
     }
     const auto stop = std::chrono::steady_clock::now();
     result.stepSeconds = std::chrono::duration<double>(stop - start).count();
+    result.heapBytesAtEnd = heapInUse() - heapBefore;
 
     result.finalPositions.reserve(bw.bodies.size());
     for (const auto& body : bw.bodies) {
-        if (body->getActivationState() == ISLAND_SLEEPING) {
+        const btVector3& v = body->getLinearVelocity();
+        const btVector3& w = body->getAngularVelocity();
+        const double velocity[3] = {v.x(), v.y(), v.z()};
+        const double angularVelocity[3] = {w.x(), w.y(), w.z()};
+        const bool asleep = body->getActivationState() == ISLAND_SLEEPING;
+        if (asleep || (!scene.sleep && slowerThanRest(velocity, angularVelocity))) {
             ++result.bodiesAtRest;
         }
         const btVector3& p = body->getCenterOfMassPosition();
         result.finalPositions.push_back({double(p.x()), double(p.y()), double(p.z())});
     }
-    result.settings = describe(bw);
+    result.settings = describe(bw, scene.sleep);
     return result;
 }
 

@@ -28,7 +28,6 @@ namespace {
 constexpr int kContactsPerBody = 4;
 // A pyramidal friction cone with condim 3 takes 4 constraint rows per contact.
 constexpr int kRowsPerContact = 4;
-constexpr double kAtRestSpeed = 1e-3;
 // MuJoCo's default contact time constant; it must stay at least two steps long to be stable.
 constexpr double kDefaultTimeConstant = 0.02;
 
@@ -233,6 +232,7 @@ PeerResult runMujoco(const PeerScene& scene) {
     }
     const auto stop = std::chrono::steady_clock::now();
     result.stepSeconds = std::chrono::duration<double>(stop - start).count();
+    result.heapBytesAtEnd = heapInUse() - heapBefore;
 
     const mjModel* m = world.model;
     const mjData* d = world.data;
@@ -241,9 +241,7 @@ PeerResult runMujoco(const PeerScene& scene) {
         const int joint = m->body_jntadr[i + 1];
         const mjtNum* qpos = d->qpos + m->jnt_qposadr[joint];
         const mjtNum* qvel = d->qvel + m->jnt_dofadr[joint];
-        const double speed = std::sqrt(qvel[0] * qvel[0] + qvel[1] * qvel[1] + qvel[2] * qvel[2]);
-        const double spin = std::sqrt(qvel[3] * qvel[3] + qvel[4] * qvel[4] + qvel[5] * qvel[5]);
-        if (speed < kAtRestSpeed && spin < kAtRestSpeed) {
+        if (slowerThanRest(qvel, qvel + 3)) {
             ++result.bodiesAtRest;
         }
         result.finalPositions.push_back({qpos[0], qpos[1], qpos[2]});

@@ -102,7 +102,7 @@ void build(OdeWorld& ow, const PeerScene& scene) {
     dWorldSetGravity(ow.world, scene.gravity[0], scene.gravity[1], scene.gravity[2]);
     dWorldSetContactSurfaceLayer(ow.world, kSurfaceLayer);
     // Bodies copy the world's auto-disable settings when created, so this must come first.
-    dWorldSetAutoDisableFlag(ow.world, 1);
+    dWorldSetAutoDisableFlag(ow.world, scene.sleep ? 1 : 0);
 
     dCreatePlane(ow.space, 0, 1, 0, scene.groundHeight);
 
@@ -139,12 +139,17 @@ std::string describe(const OdeWorld& ow) {
         << " contacts per pair, dContactBounce (bounce = restitution, "
         << "bounce_vel " << kBounceVelocity
         << " m/s) + dContactApprox1 (Coulomb pyramid, mu = friction); body-body: max restitution, "
-        << "sqrt(mu1 mu2); pairs with no awake body skipped; auto-disable on (ODE defaults): below "
-        << dWorldGetAutoDisableLinearThreshold(ow.world) << " m/s and "
-        << dWorldGetAutoDisableAngularThreshold(ow.world) << " rad/s for "
-        << dWorldGetAutoDisableSteps(ow.world) << " steps and "
-        << dWorldGetAutoDisableTime(ow.world) << " s, averaged over "
-        << dWorldGetAutoDisableAverageSamplesCount(ow.world) << " sample(s)";
+        << "sqrt(mu1 mu2); pairs with no awake body skipped; ";
+    if (dWorldGetAutoDisableFlag(ow.world) != 0) {
+        out << "auto-disable on (ODE defaults): below "
+            << dWorldGetAutoDisableLinearThreshold(ow.world) << " m/s and "
+            << dWorldGetAutoDisableAngularThreshold(ow.world) << " rad/s for "
+            << dWorldGetAutoDisableSteps(ow.world) << " steps and "
+            << dWorldGetAutoDisableTime(ow.world) << " s, averaged over "
+            << dWorldGetAutoDisableAverageSamplesCount(ow.world) << " sample(s)";
+    } else {
+        out << "auto-disable off: at rest means |v|, |w| < " << kAtRestSpeed;
+    }
     return out.str();
 }
 
@@ -172,10 +177,15 @@ PeerResult runOde(const PeerScene& scene) {
     }
     const auto stop = std::chrono::steady_clock::now();
     result.stepSeconds = std::chrono::duration<double>(stop - start).count();
+    result.heapBytesAtEnd = heapInUse() - heapBefore;
 
     result.finalPositions.reserve(ow.bodies.size());
     for (const dBodyID body : ow.bodies) {
-        if (!dBodyIsEnabled(body)) {
+        const dReal* v = dBodyGetLinearVel(body);
+        const dReal* w = dBodyGetAngularVel(body);
+        const double velocity[3] = {v[0], v[1], v[2]};
+        const double angularVelocity[3] = {w[0], w[1], w[2]};
+        if (!dBodyIsEnabled(body) || (!scene.sleep && slowerThanRest(velocity, angularVelocity))) {
             ++result.bodiesAtRest;
         }
         const dReal* p = dBodyGetPosition(body);

@@ -23,6 +23,13 @@ long long heapInUse() {
 #endif
 }
 
+bool slowerThanRest(const double velocity[3], const double angularVelocity[3]) {
+    const auto length = [](const double v[3]) {
+        return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    };
+    return length(velocity) < kAtRestSpeed && length(angularVelocity) < kAtRestSpeed;
+}
+
 } // namespace detail
 
 namespace {

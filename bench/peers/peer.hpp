@@ -28,6 +28,9 @@ struct PeerScene {
     double groundHeight; ///< the ground is the infinite plane y = groundHeight
     double dt;           ///< fixed step, s
     long steps;          ///< number of steps to run
+    /// Whether bodies may sleep (deactivate) at the engine's own thresholds; a scene that compares
+    /// with sleeping off (a stack, Jolt's pyramid) turns it off in every engine.
+    bool sleep = true;
 };
 
 struct PeerResult {
@@ -35,11 +38,14 @@ struct PeerResult {
     std::string settings;   ///< one line: solver, contact model, sleeping thresholds, ...
     double stepSeconds = 0; ///< wall time of the stepping loop only (steady_clock)
     /// Bodies asleep/disabled at the end, or with |v| and |w| below 1e-3 where the engine has no
-    /// sleeping.
+    /// sleeping or the scene turns it off.
     long bodiesAtRest = 0;
     /// Heap in use after building the world minus before (glibc mallinfo2: uordblks + hblkhd);
     /// bytes per body = heapBytes / N. Allocations made later, while stepping, are not counted.
     long long heapBytes = 0;
+    /// Heap in use after the last step, the world still alive, minus before building: the world
+    /// with the contact storage the scene made it grow.
+    long long heapBytesAtEnd = 0;
     std::vector<std::array<double, 3>> finalPositions; ///< per body, y-up
 };
 

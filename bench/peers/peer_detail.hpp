@@ -11,6 +11,13 @@ namespace tumble::bench::detail {
 /// Bytes of heap in use by the whole process (glibc mallinfo2: uordblks + hblkhd), 0 elsewhere.
 long long heapInUse();
 
+/// Below this linear and angular speed (m/s, rad/s) a body counts as at rest in an engine or a
+/// scene without sleeping.
+constexpr double kAtRestSpeed = 1e-3;
+
+/// Whether both speeds are below kAtRestSpeed.
+bool slowerThanRest(const double velocity[3], const double angularVelocity[3]);
+
 #ifdef TUMBLE_PEER_BULLET
 std::string bulletName();
 PeerResult runBullet(const PeerScene& scene);

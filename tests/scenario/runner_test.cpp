@@ -36,6 +36,19 @@ Real totalEnergy(const Runner& runner)
     return energy;
 }
 
+/// Simulated time of a scenario whose whole duration is too long for this test: pile_100.toml
+/// (benchmark S5) steps for about two minutes over its 10 s in an optimised build; its first
+/// 0.5 s bring the lower layers down onto each other and cost seconds, also under the sanitizers
+/// (issue 16). Its whole run is
+/// ContactScenarios.ThePileOfOneHundredSettlesOnTheGroundWithNothingFlyingOff.
+std::vector<std::string> shortened(const std::filesystem::path& file)
+{
+    if (file.filename() == "pile_100.toml") {
+        return {"world.duration=0.5"};
+    }
+    return {};
+}
+
 TEST(Runner, EveryScenarioFileRunsToItsEndFiniteWithBalancedBooksAndNoEnergyGain)
 {
     int files = 0;
@@ -45,7 +58,7 @@ TEST(Runner, EveryScenarioFileRunsToItsEndFiniteWithBalancedBooksAndNoEnergyGain
         }
         ++files;
         SCOPED_TRACE(entry.path().filename().string());
-        Runner runner(loadScenario(entry.path()));
+        Runner runner(loadScenario(entry.path(), shortened(entry.path())));
         const long long steps = std::llround(runner.scenario().duration / runner.scenario().dt);
         Real energyBefore = totalEnergy(runner);
         const Real scale = 1.0 + std::abs(energyBefore);
