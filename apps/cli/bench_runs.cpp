@@ -51,6 +51,15 @@ long long heapInUse()
     return static_cast<long long>(info.uordblks + info.hblkhd);
 }
 
+/// Whether glibc's counters see this process's allocations: a sanitizer's allocator replaces
+/// malloc and leaves every counter at zero, and then the heap is not known. (By the time a row
+/// runs, glibc's malloc has served the scenario's loading from its arena.)
+bool heapIsCounted()
+{
+    const struct mallinfo2 info = mallinfo2();
+    return info.arena + info.hblkhd > 0;
+}
+
 double horizontalDistance(const Vec3& from, const Vec3& to)
 {
     return std::hypot(to.x - from.x, to.z - from.z);
@@ -109,8 +118,8 @@ BenchRow runTumble(const scenario::Scenario& loaded, const std::string& name, in
         if (first) {
             // Every run is the same to the bit: the first one's memory and end state.
             first = false;
-            row.heapBytes = heapBytes;
-            row.heapBytesAtEnd = heapInUse() - heapBefore;
+            row.heapBytes = heapIsCounted() ? heapBytes : -1;
+            row.heapBytesAtEnd = heapIsCounted() ? heapInUse() - heapBefore : -1;
             row.contactsPerStep =
                 static_cast<double>(contactPoints) / static_cast<double>(std::max(1L, row.steps));
             recordEndState(built, start, row);

@@ -21,9 +21,10 @@ struct BenchRow {
     double stepSeconds = 0.0;
     int runs = 1;
     long bodiesAtRest = 0;
-    /// Heap in use after building the world minus before.
+    /// Heap in use after building the world minus before; -1 where the allocator does not count
+    /// (a sanitizer's replaces glibc's malloc).
     long long heapBytes = 0;
-    /// Heap in use after the last step, the world still alive, minus before building.
+    /// Heap in use after the last step, the world still alive, minus before building; -1 as above.
     long long heapBytesAtEnd = 0;
     /// Contact points the solver saw, averaged over the steps; negative where not known (peers).
     double contactsPerStep = -1.0;

@@ -35,6 +35,12 @@ std::string ratioText(const BenchRow& row, const char* format = "%.2f")
     return ratio;
 }
 
+/// Heap bytes per body, or "-" where the allocator does not count them (a sanitizer's).
+std::string bytesPerBodyText(long long heapBytes, int bodies)
+{
+    return heapBytes < 0 ? std::string("-") : std::to_string(heapBytes / std::max(1, bodies));
+}
+
 } // namespace
 
 void printMachine()
@@ -60,11 +66,11 @@ void printRows(const std::vector<BenchRow>& rows)
                         row.bodies, "-", row.note.c_str());
             continue;
         }
-        std::printf("%-4s %-14s %6d %7d %8ld %5d %12.2f %14.1f %9ld %11lld %10s\n",
+        std::printf("%-4s %-14s %6d %7d %8ld %5d %12.2f %14.1f %9ld %11s %10s\n",
                     row.scenario.c_str(), row.engine.c_str(), row.bodies, row.threads, row.steps,
                     row.runs, 1e6 * row.stepSeconds / static_cast<double>(row.steps),
                     row.nsPerBodyStep(), row.bodiesAtRest,
-                    row.heapBytes / std::max(1, row.bodies), ratioText(row).c_str());
+                    bytesPerBodyText(row.heapBytes, row.bodies).c_str(), ratioText(row).c_str());
     }
 }
 
@@ -84,11 +90,11 @@ void printContactRows(const std::vector<BenchRow>& rows)
         if (row.contactsPerStep >= 0.0) {
             std::snprintf(contacts, sizeof contacts, "%.1f", row.contactsPerStep);
         }
-        std::printf("%-7s %-14s %6d %7d %6ld %4d %9.3f %12.1f %13s %7ld %10lld %10.4f %8s\n",
+        std::printf("%-7s %-14s %6d %7d %6ld %4d %9.3f %12.1f %13s %7ld %10s %10.4f %8s\n",
                     row.scenario.c_str(), row.engine.c_str(), row.bodies, row.threads, row.steps,
                     row.runs, 1e3 * row.stepSeconds / static_cast<double>(row.steps),
                     row.nsPerBodyStep(), contacts, row.bodiesAtRest,
-                    row.heapBytesAtEnd / std::max(1, row.bodies), row.maxSideways,
+                    bytesPerBodyText(row.heapBytesAtEnd, row.bodies).c_str(), row.maxSideways,
                     ratioText(row, "%.3g").c_str());
     }
 }
