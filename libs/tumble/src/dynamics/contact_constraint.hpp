@@ -47,6 +47,20 @@ struct ContactConstraint {
     /// Tangential K_t (11.3) and its inverse, row-major.
     std::array<Real, 4> tangentK{};
     std::array<Real, 4> tangentMass{};
+    /// The angular rows of the Jacobian along d = n, t1, t2 (11.2): rA x d and rB x d, and their
+    /// images under the inverse inertia, IA^-1 (rA x d) and IB^-1 (rB x d). With them a sweep
+    /// reads the point velocity along d as d . v + (r x d) . w and applies an impulse as a
+    /// scaled sum, without cross products or matrix products.
+    std::array<Vec3, 3> angularA{};
+    std::array<Vec3, 3> angularB{};
+    std::array<Vec3, 3> responseA{};
+    std::array<Vec3, 3> responseB{};
+    /// Each body's part of K (11.2), (11.3): along n, and the tangential (t1 t1, t1 t2, t2 t2);
+    /// the work of an impulse on one body follows from them (8.2).
+    Real normalKA = 0.0;
+    Real normalKB = 0.0;
+    std::array<Real, 3> tangentKA{};
+    std::array<Real, 3> tangentKB{};
     /// The pair's kinetic and static coefficients, and the one this solve uses (6.2).
     Real kineticFriction = 0.0;
     Real staticFriction = 0.0;

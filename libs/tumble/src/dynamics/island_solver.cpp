@@ -13,17 +13,54 @@ namespace {
 /// Below this sliding speed a point sticks, and the static coefficient bounds its friction, m/s.
 constexpr Real kStickingSpeed = 1e-3;
 
-/// K along directions d1, d2 of a constraint (11.2), (11.3):
-/// 1/mA + 1/mB + (rA x d1) . IA^-1 (rA x d2) + (rB x d1) . IB^-1 (rB x d2).
-Real effectiveInverseMass(const ContactConstraint& c, const SolverBody& a, const SolverBody& b,
-                          const Vec3& d1, const Vec3& d2)
+/// The point velocity of a body along direction `axis` of a constraint, d . v + (r x d) . w
+/// (11.2), from the constraint's angular row `angular` = r x d.
+Real pointVelocityAlong(const SolverBody& body, const Vec3& direction, const Vec3& angular)
 {
-    const Vec3 a1 = glm::cross(c.offsetA, d1);
-    const Vec3 b1 = glm::cross(c.offsetB, d1);
-    const Vec3 a2 = glm::cross(c.offsetA, d2);
-    const Vec3 b2 = glm::cross(c.offsetB, d2);
-    const Real linear = glm::dot(d1, d2) * (a.invMass + b.invMass);
-    return linear + glm::dot(a1, a.invInertiaWorld * a2) + glm::dot(b1, b.invInertiaWorld * b2);
+    return glm::dot(direction, body.linearVelocity) + glm::dot(angular, body.angularVelocity);
+}
+
+/// Applies `impulse` times direction d (index `axis`: n, t1, t2) to B and its opposite to A.
+void applyAlong(const ContactConstraint& c, SolverBody& a, SolverBody& b, const Vec3& direction,
+                int axis, Real impulse)
+{
+    a.linearVelocity -= (a.invMass * impulse) * direction;
+    a.angularVelocity -= impulse * c.responseA[axis];
+    b.linearVelocity += (b.invMass * impulse) * direction;
+    b.angularVelocity += impulse * c.responseB[axis];
+}
+
+/// The normal step of one point: impulse change `change` along n, from point velocities vA and
+/// vB along n before it. Books its work on each body, P . (u_before + u_after) / 2 (8.2), with
+/// u_after . n = u_before . n -+ change kA or kB.
+void applyNormal(const ContactConstraint& c, SolverBody& a, SolverBody& b, Real change, Real vA,
+                 Real vB)
+{
+    applyAlong(c, a, b, c.normal, 0, change);
+    a.normalWork -= change * (vA - 0.5 * change * c.normalKA);
+    b.normalWork += change * (vB + 0.5 * change * c.normalKB);
+}
+
+/// The friction step of one point: impulse change (change1, change2) along t1, t2, from point
+/// velocities along t1, t2 before it (A's, then B's); its work as in applyNormal with each
+/// body's 2x2 part of K_t.
+void applyFriction(const ContactConstraint& c, SolverBody& a, SolverBody& b, Real change1,
+                   Real change2, const std::array<Real, 4>& velocities)
+{
+    applyAlong(c, a, b, c.tangent1, 1, change1);
+    applyAlong(c, a, b, c.tangent2, 2, change2);
+    const auto halfResponse = [&](const std::array<Real, 3>& k, Real& along1, Real& along2) {
+        along1 = 0.5 * (k[0] * change1 + k[1] * change2);
+        along2 = 0.5 * (k[1] * change1 + k[2] * change2);
+    };
+    Real a1 = 0.0;
+    Real a2 = 0.0;
+    halfResponse(c.tangentKA, a1, a2);
+    a.frictionWork -= change1 * (velocities[0] - a1) + change2 * (velocities[1] - a2);
+    Real b1 = 0.0;
+    Real b2 = 0.0;
+    halfResponse(c.tangentKB, b1, b2);
+    b.frictionWork += change1 * (velocities[2] + b1) + change2 * (velocities[3] + b2);
 }
 
 /// Velocity of B's material point relative to A's at the constraint's point.
@@ -32,21 +69,38 @@ Vec3 relativeVelocity(const ContactConstraint& c, const SolverBody& a, const Sol
     return b.velocityAt(c.offsetB) - a.velocityAt(c.offsetA);
 }
 
-/// Applies impulse P to B and -P to A at the constraint's point, and books its work on each
-/// body, P . (u_before + u_after) / 2 per body (8.2), under the normal or the friction heading.
-void applyImpulse(const ContactConstraint& c, SolverBody& a, SolverBody& b, const Vec3& impulse,
-                  bool isFriction)
+/// The Jacobian rows, each body's part of K and its inverse masses along n, t1, t2 (11.2),
+/// (11.3), for the constraint's normal, tangents and offsets.
+void prepareJacobians(ContactConstraint& c, const SolverBody& a, const SolverBody& b)
 {
-    const Real beforeA = glm::dot(impulse, a.velocityAt(c.offsetA));
-    const Real beforeB = glm::dot(impulse, b.velocityAt(c.offsetB));
-    a.linearVelocity -= a.invMass * impulse;
-    a.angularVelocity -= a.invInertiaWorld * glm::cross(c.offsetA, impulse);
-    b.linearVelocity += b.invMass * impulse;
-    b.angularVelocity += b.invInertiaWorld * glm::cross(c.offsetB, impulse);
-    const Real workA = -0.5 * (beforeA + glm::dot(impulse, a.velocityAt(c.offsetA)));
-    const Real workB = 0.5 * (beforeB + glm::dot(impulse, b.velocityAt(c.offsetB)));
-    (isFriction ? a.frictionWork : a.normalWork) += workA;
-    (isFriction ? b.frictionWork : b.normalWork) += workB;
+    const std::array<Vec3, 3> directions{c.normal, c.tangent1, c.tangent2};
+    for (int axis = 0; axis < 3; ++axis) {
+        c.angularA[axis] = glm::cross(c.offsetA, directions[axis]);
+        c.angularB[axis] = glm::cross(c.offsetB, directions[axis]);
+        c.responseA[axis] = a.invInertiaWorld * c.angularA[axis];
+        c.responseB[axis] = b.invInertiaWorld * c.angularB[axis];
+    }
+    // d_i . d_j = delta_ij for the orthonormal n, t1, t2
+    const auto part = [&](const std::array<Vec3, 3>& angular, const std::array<Vec3, 3>& response,
+                          Real invMass, int i, int j) {
+        return (i == j ? invMass : 0.0) + glm::dot(angular[i], response[j]);
+    };
+    c.normalKA = part(c.angularA, c.responseA, a.invMass, 0, 0);
+    c.normalKB = part(c.angularB, c.responseB, b.invMass, 0, 0);
+    c.tangentKA = {part(c.angularA, c.responseA, a.invMass, 1, 1),
+                   part(c.angularA, c.responseA, a.invMass, 1, 2),
+                   part(c.angularA, c.responseA, a.invMass, 2, 2)};
+    c.tangentKB = {part(c.angularB, c.responseB, b.invMass, 1, 1),
+                   part(c.angularB, c.responseB, b.invMass, 1, 2),
+                   part(c.angularB, c.responseB, b.invMass, 2, 2)};
+    c.normalMass = 1.0 / (c.normalKA + c.normalKB);
+    const Real k11 = c.tangentKA[0] + c.tangentKB[0];
+    const Real k12 = c.tangentKA[1] + c.tangentKB[1];
+    const Real k22 = c.tangentKA[2] + c.tangentKB[2];
+    const Real invDeterminant = 1.0 / (k11 * k22 - k12 * k12);
+    c.tangentK = {k11, k12, k12, k22};
+    c.tangentMass = {k22 * invDeterminant, -k12 * invDeterminant, -k12 * invDeterminant,
+                     k11 * invDeterminant};
 }
 
 } // namespace
@@ -57,14 +111,7 @@ void prepareConstraint(ContactConstraint& c, std::span<const SolverBody> bodies,
     const SolverBody& a = bodies[c.bodyA];
     const SolverBody& b = bodies[c.bodyB];
     orthonormalBasis(c.normal, c.tangent1, c.tangent2);
-    c.normalMass = 1.0 / effectiveInverseMass(c, a, b, c.normal, c.normal);
-    const Real k11 = effectiveInverseMass(c, a, b, c.tangent1, c.tangent1);
-    const Real k22 = effectiveInverseMass(c, a, b, c.tangent2, c.tangent2);
-    const Real k12 = effectiveInverseMass(c, a, b, c.tangent1, c.tangent2);
-    const Real invDeterminant = 1.0 / (k11 * k22 - k12 * k12);
-    c.tangentK = {k11, k12, k12, k22};
-    c.tangentMass = {k22 * invDeterminant, -k12 * invDeterminant, -k12 * invDeterminant,
-                     k11 * invDeterminant};
+    prepareJacobians(c, a, b);
     const Vec3 velocity = relativeVelocity(c, a, b);
     const Real normalVelocity = glm::dot(c.normal, velocity);
     c.velocityBefore = velocity;
@@ -96,18 +143,38 @@ void applyRestitution(std::span<ContactConstraint> constraints, std::span<Solver
         if (c.restitutionState != RestitutionState::Applied) {
             continue;
         }
+        SolverBody& a = bodies[c.bodyA];
+        SolverBody& b = bodies[c.bodyB];
         const Real extra = c.restitution * c.normalImpulse;
         c.normalImpulse += extra;
-        applyImpulse(c, bodies[c.bodyA], bodies[c.bodyB], extra * c.normal, false);
+        applyNormal(c, a, b, extra, pointVelocityAlong(a, c.normal, c.angularA[0]),
+                    pointVelocityAlong(b, c.normal, c.angularB[0]));
     }
 }
 
 void warmStart(std::span<const ContactConstraint> constraints, std::span<SolverBody> bodies)
 {
+    // the whole cached impulse, its work booked under the normal heading as one impulse
     for (const ContactConstraint& c : constraints) {
-        const Vec3 impulse = c.normalImpulse * c.normal + c.tangentImpulse1 * c.tangent1 +
-                             c.tangentImpulse2 * c.tangent2;
-        applyImpulse(c, bodies[c.bodyA], bodies[c.bodyB], impulse, false);
+        SolverBody& a = bodies[c.bodyA];
+        SolverBody& b = bodies[c.bodyB];
+        const std::array<Vec3, 3> directions{c.normal, c.tangent1, c.tangent2};
+        const std::array<Real, 3> impulses{c.normalImpulse, c.tangentImpulse1, c.tangentImpulse2};
+        Real workA = 0.0;
+        Real workB = 0.0;
+        for (int axis = 0; axis < 3; ++axis) {
+            workA -= impulses[axis] * pointVelocityAlong(a, directions[axis], c.angularA[axis]);
+            workB += impulses[axis] * pointVelocityAlong(b, directions[axis], c.angularB[axis]);
+        }
+        for (int axis = 0; axis < 3; ++axis) {
+            applyAlong(c, a, b, directions[axis], axis, impulses[axis]);
+        }
+        for (int axis = 0; axis < 3; ++axis) {
+            workA -= impulses[axis] * pointVelocityAlong(a, directions[axis], c.angularA[axis]);
+            workB += impulses[axis] * pointVelocityAlong(b, directions[axis], c.angularB[axis]);
+        }
+        a.normalWork += 0.5 * workA;
+        b.normalWork += 0.5 * workB;
     }
 }
 
@@ -121,18 +188,24 @@ int solveConstraints(std::span<ContactConstraint> constraints, std::span<SolverB
             SolverBody& a = bodies[c.bodyA];
             SolverBody& b = bodies[c.bodyB];
             // (11.4): normal impulse with accumulated clamping, lambda_n >= 0
-            const Real normalVelocity = glm::dot(c.normal, relativeVelocity(c, a, b));
-            const Real normalImpulse = std::max(
-                0.0, c.normalImpulse + c.normalMass * (c.targetNormalVelocity - normalVelocity));
+            const Real normalA = pointVelocityAlong(a, c.normal, c.angularA[0]);
+            const Real normalB = pointVelocityAlong(b, c.normal, c.angularB[0]);
+            const Real normalImpulse =
+                std::max(0.0, c.normalImpulse +
+                                  c.normalMass * (c.targetNormalVelocity - (normalB - normalA)));
             const Real normalChange = normalImpulse - c.normalImpulse;
             c.normalImpulse = normalImpulse;
-            applyImpulse(c, a, b, normalChange * c.normal, false);
+            applyNormal(c, a, b, normalChange, normalA, normalB);
             // (11.5): the friction step of maximal dissipation on the cone (6.4)
-            const Vec3 velocity = relativeVelocity(c, a, b);
+            const std::array<Real, 4> tangential{
+                pointVelocityAlong(a, c.tangent1, c.angularA[1]),
+                pointVelocityAlong(a, c.tangent2, c.angularA[2]),
+                pointVelocityAlong(b, c.tangent1, c.angularB[1]),
+                pointVelocityAlong(b, c.tangent2, c.angularB[2])};
             const FrictionImpulse friction = frictionOnCone(
                 c.tangentK, c.tangentMass, c.tangentImpulse1, c.tangentImpulse2,
-                c.friction * c.normalImpulse, glm::dot(c.tangent1, velocity),
-                glm::dot(c.tangent2, velocity), c.frictionShift);
+                c.friction * c.normalImpulse, tangential[2] - tangential[0],
+                tangential[3] - tangential[1], c.frictionShift);
             const Real impulse1 = friction.impulse1;
             const Real impulse2 = friction.impulse2;
             const Real magnitude = std::sqrt(impulse1 * impulse1 + impulse2 * impulse2);
@@ -140,7 +213,7 @@ int solveConstraints(std::span<ContactConstraint> constraints, std::span<SolverB
             const Real change2 = impulse2 - c.tangentImpulse2;
             c.tangentImpulse1 = impulse1;
             c.tangentImpulse2 = impulse2;
-            applyImpulse(c, a, b, change1 * c.tangent1 + change2 * c.tangent2, true);
+            applyFriction(c, a, b, change1, change2, tangential);
             largestChange = std::max(
                 {largestChange, std::abs(normalChange), std::abs(change1), std::abs(change2)});
             largestImpulse = std::max({largestImpulse, normalImpulse, magnitude});
