@@ -3,6 +3,7 @@
 
 #include "schema.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -10,6 +11,11 @@ namespace tumble::scenario::detail {
 
 std::string exact(Real value)
 {
+    // "%.17g" writes -0 as "-0", which TOML reads as the integer 0 and so as +0: a float literal
+    // keeps the sign (a sign a replayed throw must keep to repeat the throw's rounding)
+    if (value == 0.0 && std::signbit(value)) {
+        return "-0.0";
+    }
     char buffer[32];
     std::snprintf(buffer, sizeof buffer, "%.17g", value);
     return buffer;
