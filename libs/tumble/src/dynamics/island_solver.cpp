@@ -179,11 +179,13 @@ void warmStart(std::span<const ContactConstraint> constraints, std::span<SolverB
 }
 
 int solveConstraints(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
-                     int iterations, Real convergence)
+                     int iterations, Real convergence, Real velocityTolerance)
 {
     for (int sweep = 1; sweep <= iterations; ++sweep) {
         Real largestChange = 0.0;
         Real largestImpulse = 0.0;
+        // the largest velocity correction of the sweep, |K delta lambda| (11.5a)
+        Real largestCorrection = 0.0;
         for (ContactConstraint& c : constraints) {
             SolverBody& a = bodies[c.bodyA];
             SolverBody& b = bodies[c.bodyB];
@@ -217,8 +219,14 @@ int solveConstraints(std::span<ContactConstraint> constraints, std::span<SolverB
             largestChange = std::max(
                 {largestChange, std::abs(normalChange), std::abs(change1), std::abs(change2)});
             largestImpulse = std::max({largestImpulse, normalImpulse, magnitude});
+            const Real tangential1 = c.tangentK[0] * change1 + c.tangentK[1] * change2;
+            const Real tangential2 = c.tangentK[2] * change1 + c.tangentK[3] * change2;
+            largestCorrection = std::max(
+                {largestCorrection, std::abs(normalChange) / c.normalMass,
+                 std::sqrt(tangential1 * tangential1 + tangential2 * tangential2)});
         }
-        if (largestChange <= convergence * largestImpulse) {
+        if (largestChange <= convergence * largestImpulse ||
+            largestCorrection <= velocityTolerance) {
             return sweep;
         }
     }

@@ -41,9 +41,10 @@ void applyRestitution(std::span<ContactConstraint> constraints, std::span<Solver
 void warmStart(std::span<const ContactConstraint> constraints, std::span<SolverBody> bodies);
 
 /// Gauss-Seidel sweeps of normal (11.4) then friction (11.5) impulses with accumulated clamping,
-/// until no impulse changes by more than `convergence` times the largest, or `iterations`
+/// until no impulse changes by more than `convergence` times the largest, or no point's velocity
+/// is corrected by more than `velocityTolerance` (m/s) in a sweep (11.5a), or `iterations`
 /// sweeps. Returns the sweeps done.
 int solveConstraints(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
-                     int iterations, Real convergence);
+                     int iterations, Real convergence, Real velocityTolerance = 0.0);
 
 } // namespace tumble

@@ -28,6 +28,11 @@ constexpr int kMaxArrivalCuts = 4;
 /// alone, since what is left undone stays in the velocities of a whole stack (11.5).
 constexpr Real kImpactConvergence = 1e-13;
 constexpr Real kRestingConvergence = 1e-12;
+/// (11.5a): a resting solve also ends when a sweep corrects no point's velocity by more than
+/// this share of the speed gravity gives in the sub-step, |g| tau: the impulses may still creep
+/// along the many equal ways of carrying a statically indeterminate load, but the motion does
+/// not change.
+constexpr Real kRestingVelocityShare = 1e-10;
 
 /// (8.4): the island's total work of the normal and of the friction impulses, shared among its
 /// bodies in proportion to their kinetic energy before the stage (their mass when all are at
@@ -77,6 +82,10 @@ private:
     [[nodiscard]] Real earliestArrival(Real tau);
     void finishSubstep(Real tau);
     Body& body(std::size_t local) { return m_slots[m_island.bodies[local]].body; }
+    [[nodiscard]] Real restingVelocityTolerance(Real tau) const
+    {
+        return kRestingVelocityShare * glm::length(m_settings.gravity) * tau;
+    }
     void countSolve(int sweeps)
     {
         ++m_events.statistics.solves;
@@ -256,7 +265,7 @@ void CoupledStep::solveSubstep(Real tau)
     loadWarmStart(m_island, m_slots, m_contacts, m_constraints, tau, m_settings);
     warmStart(m_constraints, m_bodies);
     countSolve(solveConstraints(m_constraints, m_bodies, m_settings.solverIterations,
-                                kRestingConvergence));
+                                kRestingConvergence, restingVelocityTolerance(tau)));
 }
 
 Real CoupledStep::earliestArrival(Real tau)
@@ -282,7 +291,8 @@ Real CoupledStep::earliestArrival(Real tau)
         }
     }
     warmStart(inContact, free);
-    solveConstraints(inContact, free, m_settings.solverIterations, kRestingConvergence);
+    solveConstraints(inContact, free, m_settings.solverIterations, kRestingConvergence,
+                     restingVelocityTolerance(tau));
     gapMotions(m_constraints, free, m_velocityStart, m_angularVelocityStart, tau, m_gapMotions);
     return tumble::earliestArrival(m_constraints, m_gapMotions, tau, touching,
                                    m_settings.restitutionThreshold);
