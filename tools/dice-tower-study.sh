@@ -10,7 +10,7 @@
 # Writes docs/images/dice_tower_k1.1.dat (the table) and docs/images/dice_tower_k1.1.png (gnuplot).
 #
 #   bash tools/dice-tower-study.sh            # after building build/apps/cli/tumble
-#   THROWS=2000 THREADS=2 TUMBLE=path/to/tumble bash tools/dice-tower-study.sh
+#   THROWS=2000 THREADS=2 OUT_DIR=/tmp TUMBLE=path/to/tumble bash tools/dice-tower-study.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -20,7 +20,7 @@ seed="${SEED:-1}"
 threads="${THREADS:-1}"
 k=1.1
 size="[0.016, $(awk -v k="$k" 'BEGIN { printf "%.6g", 0.016 * k }'), 0.016]"
-out_dir=docs/images
+out_dir="${OUT_DIR:-docs/images}"
 table="$out_dir/dice_tower_k$k.dat"
 plot="$out_dir/dice_tower_k$k.png"
 work=$(mktemp -d)
@@ -94,14 +94,40 @@ for die, faces in dice.items():
     centre = (p + z2n / 2) / (1 + z2n)
     half = z * math.sqrt(p * (1 - p) / n + z2n / (4 * n)) / (1 + z2n)
     x2 = sum((c - n / 6) ** 2 / (n / 6) for c in counts)
-    # P(chi2_5 >= x2) = Q(5/2, y), y = x2/2: erfc(sqrt y) + exp(-y) (2 sqrt y + 4/3 y^1.5) / sqrt pi
-    y = x2 / 2
-    p_fair = math.erfc(math.sqrt(y)) + math.exp(-y) * (2 * math.sqrt(y) + 4 / 3 * y**1.5) / math.sqrt(math.pi)
+    # P(chi2_5 >= x2) = Q(5/2, y), y = x2/2: erfc(sqrt y) + exp(-y) (2 sqrt y + 4/3 y^1.5) / sqrt pi;
+    # past exp's range, its log from erfc(x) ~ exp(-x^2) / (x sqrt pi) (1 - 1/(2x^2) + 3/(4x^4))
+    y, root = x2 / 2, math.sqrt(x2 / 2)
+    if y < 600:
+        q = math.erfc(root) + math.exp(-y) * (2 * root + 4 / 3 * y * root) / math.sqrt(math.pi)
+        p_fair = f"{q:.3g}"
+    else:
+        series = 4 / 3 * y * root + 2 * root + (1 - 1 / (2 * y) + 3 / (4 * y * y)) / root
+        log10_p = (-y + math.log(series / math.sqrt(math.pi))) / math.log(10)
+        exponent = math.floor(log10_p)
+        p_fair = f"{10 ** (log10_p - exponent):.3g}e{exponent}"
     print(f"{name:12s} {summary['throws']:6d} {n:6d} {summary['unsettled']:4d} {cocked:4d}  "
           + " ".join(f"{c:5d}" for c in counts)
-          + f"  {small:6d} {p:.5f} {centre - half:.5f} {centre + half:.5f}  {x2:9.2f} {p_fair:.3g}")
+          + f"  {small:6d} {p:.5f} {centre - half:.5f} {centre + half:.5f}  {x2:9.2f} {p_fair}")
 PYTHON
 done
+
+# the differences the question is about, with 99 % Wald intervals (independent throws)
+python3 - "$table" >>"$table" <<'PYTHON'
+import math, sys
+rows = {}
+for line in open(sys.argv[1]):
+    if not line.startswith("#"):
+        fields = line.split()
+        rows[fields[0]] = (int(fields[11]), int(fields[2]))
+z = 2.5758293035489004
+for a, b in (("tower", "floor"), ("tower", "floor_low"), ("tower", "tray"), ("tray", "floor"),
+             ("tower2_d1", "tower")):
+    (ka, na), (kb, nb) = rows[a], rows[b]
+    pa, pb = ka / na, kb / nb
+    half = z * math.sqrt(pa * (1 - pa) / na + pb * (1 - pb) / nb)
+    print(f"# p_small({a}) - p_small({b}) = {pa - pb:+.5f}, 99% interval (Wald)"
+          f" [{pa - pb - half:+.5f}, {pa - pb + half:+.5f}]")
+PYTHON
 
 # the static solid-angle model for k ((D.3)): the two square faces' share of 4 pi
 p_solid=$(awk -v k="$k" 'BEGIN { d = k / 2
