@@ -9,27 +9,19 @@
 #   tower2:    both dice of scenarios/dice_tower.toml, both biased (one row per die).
 # Writes docs/images/dice_tower_k1.1.dat (the table) and docs/images/dice_tower_k1.1.png (gnuplot).
 #
-#   bash tools/dice-tower-study.sh            # after building build/apps/cli/tumble
+#   bash tools/dice-tower-study.sh    # after building build/apps/cli/tumble; 100,000 throws a
+#                                     # case, about 9 min of CPU on one thread
 #   THROWS=2000 THREADS=2 OUT_DIR=/tmp TUMBLE=path/to/tumble bash tools/dice-tower-study.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-tumble="${TUMBLE:-build/apps/cli/tumble}"
-throws="${THROWS:-60000}"
-seed="${SEED:-1}"
+source tools/dice-study-common.sh
+dice_study_setup dice-tower-study 100000
 threads="${THREADS:-1}"
 k=1.1
 size="[0.016, $(awk -v k="$k" 'BEGIN { printf "%.6g", 0.016 * k }'), 0.016]"
-out_dir="${OUT_DIR:-docs/images}"
 table="$out_dir/dice_tower_k$k.dat"
 plot="$out_dir/dice_tower_k$k.png"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-
-if [[ ! -x "$tumble" ]]; then
-    echo "dice-tower-study: $tumble not found; build first (cmake --build build)" >&2
-    exit 1
-fi
 
 # the scenario file FILE without the [[body]] tables named NAME... (a table ends at the next header)
 without_bodies() {
