@@ -5,24 +5,15 @@
 # Writes docs/images/dice_k.dat (the table) and docs/images/dice_k.png (the plot, gnuplot).
 #
 #   bash tools/dice-study.sh            # after building build/apps/cli/tumble
-#   THROWS=500 TUMBLE=path/to/tumble bash tools/dice-study.sh
+#   THROWS=500 OUT_DIR=/tmp TUMBLE=path/to/tumble bash tools/dice-study.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-tumble="${TUMBLE:-build/apps/cli/tumble}"
-throws="${THROWS:-10000}"
-seed="${SEED:-1}"
+source tools/dice-study-common.sh
+dice_study_setup dice-study 10000
 edge=0.02
-out_dir=docs/images
 table="$out_dir/dice_k.dat"
 plot="$out_dir/dice_k.png"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-
-if [[ ! -x "$tumble" ]]; then
-    echo "dice-study: $tumble not found; build first (cmake --build build)" >&2
-    exit 1
-fi
 
 # one JSON value by key: "+y": 123 -> 123
 json_count() { grep -o "\"$2\": [0-9]*" "$1" | head -n1 | sed 's/.*: //'; }
