@@ -98,10 +98,12 @@ async function playToRest(page) {
     await page.click('#play');
     await page.waitForFunction(() => window.tumble.time() >= 3.2, { timeout: 60000, polling: 100 });
     await page.click('#play');
-    const log = (await page.evaluate(() => window.tumble.logText())).split('\n');
-    const shown = log.filter((line) => line.includes('came to rest'));
+    const text = await page.evaluate(() => window.tumble.logText());
+    const shown = text.split('\n').filter((line) => line.includes('came to rest'));
     if (shown.join('\n') !== expected.join('\n')) {
-        throw new Error(`page: ${JSON.stringify(shown)}, CLI: ${JSON.stringify(expected)}`);
+        const time = await page.evaluate(() => window.tumble.time());
+        throw new Error(`page: ${JSON.stringify(shown)}, CLI: ${JSON.stringify(expected)} ` +
+            `(t = ${time} s, log of ${text.length} characters ending ${JSON.stringify(text.slice(-300))})`);
     }
     return shown.join('; ');
 }

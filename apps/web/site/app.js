@@ -28,8 +28,7 @@ const plots = {
         { label: 'kinetic', colour: '#f66' }, { label: 'potential', colour: '#6c6' },
         { label: 'total', colour: '#eee' }]),
 };
-const run = { file: '', playing: false, timeScale: 1, accumulator: 0, lastFrame: null,
-    frameTimes: [], selected: 0 };
+const run = { file: '', playing: false, timeScale: 1, accumulator: 0, lastFrame: null };
 
 function selectedBody() {
     return Number($('body').value || 0);
@@ -109,7 +108,6 @@ function setPlaying(playing) {
 }
 
 function frame(now) {
-    const start = performance.now();
     if (run.playing && sim.loaded() && !sim.finished()) {
         // wall time since the last frame, times the time scale, in whole fixed steps
         const elapsed = run.lastFrame === null ? 0 : Math.min(0.25, (now - run.lastFrame) / 1000);
@@ -130,7 +128,6 @@ function frame(now) {
     Object.values(plots).forEach((plot) => plot.draw());
     flushLog();
     $('clock').textContent = `t = ${sim.time().toFixed(3)} s`;
-    if (run.playing) run.frameTimes.push(performance.now() - start);
     requestAnimationFrame(frame);
 }
 
@@ -155,14 +152,6 @@ function wireControls() {
     }
 }
 
-/// Mean, 95th percentile and largest work time of the frames played since the last reset, ms.
-function frameStats() {
-    const times = [...run.frameTimes].sort((a, b) => a - b);
-    const mean = times.reduce((sum, t) => sum + t, 0) / Math.max(1, times.length);
-    return { frames: times.length, meanMs: mean,
-        p95Ms: times[Math.floor(0.95 * (times.length - 1))] ?? 0, maxMs: times[times.length - 1] ?? 0 };
-}
-
 window.tumble = {
     module, simulation: sim, scenarios: scenarios.map((entry) => entry.name),
     pick, load, play: () => setPlaying(true), pause: () => setPlaying(false),
@@ -185,9 +174,29 @@ window.tumble = {
         sim.runSteps(count);
         return performance.now() - start;
     },
+    /// Wall time of `count` whole frames drawn back to back, each 1/60 s of simulated time:
+    /// steps, scene update, drawing and plots, waiting for the GPU to finish (a one-pixel
+    /// read-back), ms per frame.
+    timeFrames: (count) => {
+        const perFrame = Math.max(1, Math.round(1 / 60 / sim.dt()));
+        const gl = view.renderer.getContext();
+        const pixel = new Uint8Array(4);
+        const times = [];
+        for (let i = 0; i < count; i++) {
+            const start = performance.now();
+            for (let k = 0; k < perFrame; k++) advance();
+            samplePlots();
+            view.update(sim);
+            view.render();
+            Object.values(plots).forEach((plot) => plot.draw());
+            gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+            times.push(performance.now() - start);
+        }
+        return times;
+    },
     errorText: () => $('error').textContent,
-    logText: () => $('log').textContent,
-    frameStats, resetFrameStats: () => { run.frameTimes = []; },
+    /// The log pane's text, with the lines of steps not yet drawn.
+    logText: () => { flushLog(); return $('log').textContent; },
 };
 
 wireControls();

@@ -35,8 +35,7 @@ function planeMesh(point, normal, extent, tint) {
 
 export class View3d {
     constructor(canvas) {
-        this.renderer = new THREE.WebGLRenderer({ canvas, antialias: true,
-            preserveDrawingBuffer: true });
+        this.renderer = new THREE.WebGLRenderer({ canvas, antialias: true });
         this.scene = new THREE.Scene();
         this.scene.background = colour(palette.skyTop);
         this.camera = new THREE.PerspectiveCamera(45, 1, 0.05, 500);
@@ -62,6 +61,7 @@ export class View3d {
         // the camera frames every body and the ground below them
         const bounds = new THREE.Box3();
         const geometry = sim.staticGeometry();
+        let smallest = Infinity;
         for (let i = 0; i < sim.bodyCount(); i++) {
             const fixed = sim.isStatic(i);
             const size = sim.size(i);
@@ -70,6 +70,7 @@ export class View3d {
             this.meshes.push(mesh);
             const s = sim.state(i);
             const reach = 0.5 * Math.hypot(...size);
+            if (!fixed) smallest = Math.min(smallest, ...size);
             bounds.expandByPoint(new THREE.Vector3(s[0] - reach, s[1] - reach, s[2] - reach));
             bounds.expandByPoint(new THREE.Vector3(s[0] + reach, s[1] + reach, s[2] + reach));
             if (geometry.ground !== null) bounds.expandByPoint(new THREE.Vector3(s[0], geometry.ground, s[2]));
@@ -87,7 +88,8 @@ export class View3d {
         for (const plane of geometry.planes) {
             this.world.add(planeMesh(plane.point, plane.normal, 2 * radius, palette.staticTint));
         }
-        this.markerSize = 0.02 * radius;
+        // markers sized to the scene, but never hiding a small body's vertices
+        this.markerSize = Math.min(0.02 * radius, 0.06 * smallest);
         this.controls.target.copy(centre);
         this.camera.position.set(centre.x + 1.1 * radius, centre.y + 0.8 * radius,
             centre.z + 1.7 * radius);
