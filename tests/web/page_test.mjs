@@ -108,6 +108,25 @@ async function playToRest(page) {
     return shown.join('; ');
 }
 
+/// A link whose fragment carries an edited scenario opens with that text in the editor, run.
+async function openPermalink(page) {
+    const file = 'scenarios/part3_task4_friction.toml';
+    const text = readFileSync(join(repo, file), 'utf8').replace('mass = 2.0', 'mass = 3.0');
+    const fragment = '#' + new URLSearchParams({ file, toml: text }).toString();
+    const linked = await page.browser().newPage();
+    try {
+        await linked.goto(page.url().replace(/#.*$/, '') + fragment, { waitUntil: 'load' });
+        await linked.waitForFunction(() => window.tumble?.ready === true, { timeout: 60000 });
+        const editor = await linked.$eval('#editor', (element) => element.value);
+        const log = await linked.evaluate(() => window.tumble.logText());
+        if (editor !== text) throw new Error('the editor does not hold the linked text');
+        if (!log.includes('body rb: mass = 3.000000 kg')) throw new Error(`the run is not the linked one: ${log.slice(0, 300)}`);
+    } finally {
+        await linked.close();
+    }
+    return 'the edited mass (3 kg) is in the editor and in the run';
+}
+
 const cases = [
     ['friction scenario equals tumble run --csv at t = 3 s',
         (page) => compareWithCli(page, 'part3_task4_friction', 3, [])],
@@ -119,6 +138,7 @@ const cases = [
         (page) => compareError(page, 'part3_task4_friction', (text) => `${text}\n[[body]\n`)],
     ['the 3D view shows the cuboid and changes over time', checkScreenshots],
     ['play shows the rest line of tumble run', playToRest],
+    ['a permalink opens its scenario text', openPermalink],
 ];
 
 const { server, url } = await serve(site);
