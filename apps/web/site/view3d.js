@@ -76,7 +76,9 @@ export class View3d {
             if (geometry.ground !== null) bounds.expandByPoint(new THREE.Vector3(s[0], geometry.ground, s[2]));
         }
         const centre = bounds.getCenter(new THREE.Vector3());
-        const radius = Math.max(3, 0.6 * bounds.getSize(new THREE.Vector3()).length());
+        // a 16 mm die and a 10 m pile are both framed: no floor in metres, only against a
+        // degenerate scene
+        const radius = Math.max(0.05, 0.6 * bounds.getSize(new THREE.Vector3()).length());
         if (geometry.ground !== null) {
             this.world.add(planeMesh([centre.x, geometry.ground, centre.z], [0, 1, 0],
                 8 * radius, [1, 1, 1]));
@@ -90,6 +92,9 @@ export class View3d {
         }
         // markers sized to the scene, but never hiding a small body's vertices
         this.markerSize = Math.min(0.02 * radius, 0.06 * smallest);
+        this.camera.near = 0.005 * radius;
+        this.camera.far = 200 * radius;
+        this.camera.updateProjectionMatrix();
         this.controls.target.copy(centre);
         this.camera.position.set(centre.x + 1.1 * radius, centre.y + 0.8 * radius,
             centre.z + 1.7 * radius);
