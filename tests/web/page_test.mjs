@@ -128,6 +128,29 @@ async function openPermalink(page) {
     return 'the edited mass (3 kg) is in the editor and in the run';
 }
 
+/// The impulse tool's "part 3 task 1" button at t = 2 s of part3_task1_impulse applies what the
+/// file schedules for t = 2 s: the log's lines equal `tumble run`'s, but for the label.
+async function impulseButton(page) {
+    const lines = consoleLines(cli, repo, 'scenarios/part3_task1_impulse.toml');
+    const start = lines.findIndex((line) => line.includes('impulse[0] on rb'));
+    if (start < 0) throw new Error('tumble run prints no impulse[0]');
+    const expected = [lines[start].replace('impulse[0]', 'part 3 task 1'),
+        ...lines.slice(start + 1, start + 4)];
+    await page.evaluate(() => { window.tumble.pick('part3_task1_impulse'); window.tumble.runSteps(480); });
+    await page.evaluate(() => window.tumble.logText());
+    const buttons = await page.$$eval('#experiments button', (list) => list.map((b) => b.textContent));
+    const index = buttons.indexOf('part 3 task 1');
+    if (index < 0) throw new Error(`no "part 3 task 1" button among ${buttons.join(', ')}`);
+    await (await page.$$('#experiments button'))[index].click();
+    const log = (await page.evaluate(() => window.tumble.logText())).split('\n');
+    const at = log.findIndex((line) => line.includes('part 3 task 1 on rb'));
+    const shown = at < 0 ? [] : log.slice(at, at + 4);
+    if (shown.join('\n') !== expected.join('\n')) {
+        throw new Error(`page:\n${shown.join('\n')}\nCLI:\n${expected.join('\n')}`);
+    }
+    return await page.$eval('#impulse-result', (element) => element.textContent);
+}
+
 const cases = [
     ['friction scenario equals tumble run --csv at t = 3 s',
         (page) => compareWithCli(page, 'part3_task4_friction', 3, [])],
@@ -140,6 +163,7 @@ const cases = [
     ['the 3D view shows the cuboid and changes over time', checkScreenshots],
     ['play shows the rest line of tumble run', playToRest],
     ['a permalink opens its scenario text', openPermalink],
+    ['the impulse tool applies the handout impulse as tumble run does', impulseButton],
 ];
 
 const { server, url } = await serve(site);

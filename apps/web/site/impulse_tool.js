@@ -27,13 +27,14 @@ export function applyExperiment(sim, index, experiment, startFromExperiment) {
     if (startFromExperiment) {
         sim.setVelocities(index, experiment.startVelocity, experiment.startAngularVelocity);
     }
+    const describe = (impulse, offset) =>
+        `${experiment.label}: J = ${format(impulse)} N s at r = ${format(offset)} m`;
     if (experiment.targetVelocity !== null) {
-        const problem = sim.applyTarget(index, experiment.targetVelocity,
+        const solved = sim.applyTarget(index, experiment.targetVelocity,
             experiment.targetAngularVelocity, experiment.label);
-        return problem === '' ? `${experiment.label}: target reached`
-            : `${experiment.label}: not reachable: ${problem}`;
+        return solved.problem === '' ? describe(solved.impulse, solved.offset)
+            : `${experiment.label}: not reachable: ${solved.problem}`;
     }
     sim.applyImpulse(index, experiment.impulse, experiment.offset, experiment.label);
-    return `${experiment.label}: J = ${format(experiment.impulse)} N s at r = ` +
-        `${format(experiment.offset)} m`;
+    return describe(experiment.impulse, experiment.offset);
 }

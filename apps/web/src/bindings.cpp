@@ -125,13 +125,20 @@ void applyImpulse(WebSimulation& simulation, std::size_t index, val impulse, val
     simulation.applyImpulse(index, toVec3(impulse), toVec3(offset), label);
 }
 
-/// "" when the target is reached and the impulse applied, else why not.
-std::string applyTarget(WebSimulation& simulation, std::size_t index, val velocity, val spin,
-                        const std::string& label)
+/// {problem, impulse, offset}: problem is "" when the target is reached and the impulse
+/// (applied at the offset) is applied, else why not.
+val applyTarget(WebSimulation& simulation, std::size_t index, val velocity, val spin,
+                const std::string& label)
 {
     const ImpulseTarget solved =
         simulation.applyTarget(index, toVec3(velocity), toOptionalVec3(spin), label);
-    return solved.status == ImpulseTargetStatus::Reached ? std::string() : describe(solved.status);
+    val result = val::object();
+    result.set("problem", solved.status == ImpulseTargetStatus::Reached
+                              ? std::string()
+                              : std::string(describe(solved.status)));
+    result.set("impulse", toArray(solved.impulse));
+    result.set("offset", toArray(solved.offset));
+    return result;
 }
 
 // step counts cross as doubles: this Embind has no 64-bit integers without BigInt, and a double
