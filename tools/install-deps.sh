@@ -61,7 +61,17 @@ packages=(
     xauth
     libgl1-mesa-dri
     libglx-mesa0
+    # the browser page (tools/build-web.sh, docs/web.md): Debian's emscripten (with its nodejs
+    # and node-acorn) compiles the library to WebAssembly; its test (tests/web) drives headless
+    # chromium with puppeteer-core, which npm installs from package-lock.json
+    emscripten
+    chromium
 )
+# npm for the page's packages: Debian's npm, unless a node with its own npm is installed (a
+# NodeSource nodejs provides npm and conflicts with Debian's)
+if [[ "${1:-}" != "--cli" ]] && ! command -v npm >/dev/null 2>&1; then
+    packages+=(npm)
+fi
 
 if [[ "${1:-}" == "--cli" ]]; then
     packages=("${cli_packages[@]}")

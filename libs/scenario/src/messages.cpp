@@ -1,6 +1,8 @@
 // Text for scenario error messages: numbers and vectors, node descriptions, unknown-key hints.
 #include "messages.hpp"
 
+#include "shortest_real.hpp"
+
 #include <algorithm>
 #include <array>
 #include <charconv>
@@ -17,9 +19,13 @@ std::string formatReal(Real value)
     if (std::isinf(value)) {
         return value > 0 ? "inf" : "-inf";
     }
+#if defined(__cpp_lib_to_chars)
     std::array<char, 64> buffer{};
     const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
     return std::string(buffer.data(), result.ptr);
+#else
+    return shortestReal(value);
+#endif
 }
 
 std::string formatVec3(const Vec3& value)
