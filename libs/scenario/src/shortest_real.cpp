@@ -40,8 +40,12 @@ Digits shortestDigits(double value)
 std::string fixedForm(const Digits& d, double magnitude)
 {
     const int count = static_cast<int>(d.digits.size());
+    // strings are appended, not chained with operator+ (GCC 12 warns falsely, -Wrestrict)
     if (d.exponent < 0) {
-        return "0." + std::string(static_cast<std::size_t>(-d.exponent - 1), '0') + d.digits;
+        std::string text = "0.";
+        text.append(static_cast<std::size_t>(-d.exponent - 1), '0');
+        text += d.digits;
+        return text;
     }
     if (d.exponent + 1 >= count) {
         // a whole number is written with its exact digits (as long as the padded form), as
@@ -51,19 +55,24 @@ std::string fixedForm(const Digits& d, double magnitude)
         return exact;
     }
     const auto point = static_cast<std::size_t>(d.exponent + 1);
-    return d.digits.substr(0, point) + "." + d.digits.substr(point);
+    std::string text = d.digits.substr(0, point);
+    text += '.';
+    text += d.digits.substr(point);
+    return text;
 }
 
 std::string scientificForm(const Digits& d)
 {
     std::string text = d.digits.substr(0, 1);
     if (d.digits.size() > 1) {
-        text += "." + d.digits.substr(1);
+        text += '.';
+        text += d.digits.substr(1);
     }
     char exponent[16];
     std::snprintf(exponent, sizeof exponent, "e%c%02d", d.exponent < 0 ? '-' : '+',
                   d.exponent < 0 ? -d.exponent : d.exponent);
-    return text + exponent;
+    text += exponent;
+    return text;
 }
 
 } // namespace
@@ -73,13 +82,14 @@ std::string shortestReal(double value)
     if (value == 0.0) {
         return std::signbit(value) ? "-0" : "0";
     }
-    const std::string sign = value < 0.0 ? "-" : "";
     const double magnitude = std::fabs(value);
     const Digits digits = shortestDigits(magnitude);
     const std::string fixed = fixedForm(digits, magnitude);
     const std::string scientific = scientificForm(digits);
     // fixed wins a tie, as in to_chars
-    return sign + (scientific.size() < fixed.size() ? scientific : fixed);
+    std::string text = value < 0.0 ? "-" : "";
+    text += scientific.size() < fixed.size() ? scientific : fixed;
+    return text;
 }
 
 } // namespace tumble::scenario::detail
