@@ -2,27 +2,14 @@
 // files, for the impulse tool's buttons.
 #pragma once
 
-#include "tumble/math.hpp"
+#include "tumble/scenario/impulse_experiments.hpp"
 
 #include <filesystem>
-#include <optional>
-#include <string>
 #include <vector>
 
 namespace tumble::viewer {
 
-/// One [[impulse]] entry of a handout file, with the velocities its body starts with.
-struct ImpulseExperiment {
-    /// "part 2 task 2: left_spin", "part 3 task 1".
-    std::string label;
-    Vec3 startVelocity{0.0};
-    Vec3 startAngularVelocity{0.0};
-    /// A target to solve for (when targetVelocity is set) or an impulse at an offset.
-    std::optional<Vec3> targetVelocity;
-    std::optional<Vec3> targetAngularVelocity;
-    Vec3 impulse{0.0};
-    Vec3 offset{0.0};
-};
+using scenario::ImpulseExperiment;
 
 /// Handout files holding impulse experiments, and the label prefix of each.
 struct ExperimentFile {

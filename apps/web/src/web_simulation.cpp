@@ -190,26 +190,7 @@ std::vector<ImpulseExperiment> impulseExperiments(const std::string& text,
     } catch (const scenario::ScenarioError&) {
         return {};
     }
-    std::vector<ImpulseExperiment> experiments;
-    for (const scenario::ImpulseSpec& spec : loaded.impulses) {
-        const auto body = std::find_if(
-            loaded.bodies.begin(), loaded.bodies.end(),
-            [&](const scenario::BodySpec& candidate) { return candidate.name == spec.body; });
-        if (body == loaded.bodies.end()) {
-            continue;
-        }
-        // a file with one experiment is named by its task, several by task and body
-        ImpulseExperiment experiment{
-            .label = loaded.impulses.size() > 1 ? labelPrefix + ": " + spec.body : labelPrefix,
-            .startVelocity = body->def.linearVelocity,
-            .startAngularVelocity = body->def.angularVelocity,
-            .targetVelocity = spec.targetVelocity,
-            .targetAngularVelocity = spec.targetAngularVelocity,
-            .impulse = spec.impulse.value_or(Vec3(0.0)),
-            .offset = spec.offset.value_or(Vec3(0.0))};
-        experiments.push_back(experiment);
-    }
-    return experiments;
+    return scenario::impulseExperiments(loaded, labelPrefix);
 }
 
 } // namespace tumble::web

@@ -4,6 +4,7 @@
 
 #include "tumble/impulse_target.hpp"
 #include "tumble/math.hpp"
+#include "tumble/scenario/impulse_experiments.hpp"
 #include "tumble/scenario/runner.hpp"
 #include "tumble/scenario/scenario.hpp"
 
@@ -85,16 +86,7 @@ private:
     std::ostringstream m_log;
 };
 
-/// One [[impulse]] entry of a handout file, for the impulse tool's buttons (as the viewer's).
-struct ImpulseExperiment {
-    std::string label;
-    Vec3 startVelocity{0.0};
-    Vec3 startAngularVelocity{0.0};
-    std::optional<Vec3> targetVelocity;
-    std::optional<Vec3> targetAngularVelocity;
-    Vec3 impulse{0.0};
-    Vec3 offset{0.0};
-};
+using scenario::ImpulseExperiment;
 
 /// The impulse experiments of a handout file's text, labelled "<labelPrefix>" when the file has
 /// one and "<labelPrefix>: <body>" when it has several; none when the text does not load.
