@@ -208,19 +208,8 @@ void SimRunner::applyImpulse(std::size_t body, const Vec3& impulse, const Vec3& 
 void SimRunner::applyReported(std::size_t body, const Vec3& impulse, const Vec3& offset,
                               const std::string& label, bool solvedFromTarget)
 {
-    const BodyId id = idOf(body);
-    const Body& state = world().body(id);
-    scenario::AppliedImpulse applied{.time = time(),
-                                     .bodyIndex = body,
-                                     .label = label,
-                                     .solvedFromTarget = solvedFromTarget,
-                                     .impulse = impulse,
-                                     .offset = offset,
-                                     .velocityBefore = state.linearVelocity,
-                                     .angularVelocityBefore = state.angularVelocity};
-    mutableWorld().applyImpulse(id, impulse, state.position + offset);
-    applied.velocityAfter = world().body(id).linearVelocity;
-    applied.angularVelocityAfter = world().body(id).angularVelocity;
+    const scenario::AppliedImpulse applied =
+        m_runner->applyNow(body, impulse, offset, label, solvedFromTarget);
     m_error.clear();
     if (m_stepListener) {
         m_stepListener(*m_runner, scenario::StepReport{.impulses = {applied}});

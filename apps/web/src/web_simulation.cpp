@@ -157,19 +157,8 @@ void WebSimulation::applyReported(std::size_t index, const Vec3& impulse, const 
                                   const std::string& label, bool solvedFromTarget)
 {
     // logged as the runner logs a scheduled impulse, so the log pane reads like `tumble run`
-    const BodyId id = m_runner->bodies().at(index);
-    const Body& before = body(index);
-    scenario::AppliedImpulse applied{.time = time(),
-                                     .bodyIndex = index,
-                                     .label = label,
-                                     .solvedFromTarget = solvedFromTarget,
-                                     .impulse = impulse,
-                                     .offset = offset,
-                                     .velocityBefore = before.linearVelocity,
-                                     .angularVelocityBefore = before.angularVelocity};
-    m_runner->world().applyImpulse(id, impulse, before.position + offset);
-    applied.velocityAfter = body(index).linearVelocity;
-    applied.angularVelocityAfter = body(index).angularVelocity;
+    const scenario::AppliedImpulse applied =
+        m_runner->applyNow(index, impulse, offset, label, solvedFromTarget);
     cli::Console(m_log, false).printStep(*m_runner, scenario::StepReport{.impulses = {applied}});
 }
 

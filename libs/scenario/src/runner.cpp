@@ -93,16 +93,10 @@ StepReport Runner::step(Real until)
         }
 
         const std::size_t index = bodyIndexByName(m_scenario, spec);
-        const BodyId id = m_built.bodies[index];
-        const Body& body = m_built.world.body(id);
-        AppliedImpulse applied;
-        applied.time = spec.at;
-        applied.bodyIndex = index;
-        applied.label = spec.label;
-        applied.velocityBefore = body.linearVelocity;
-        applied.angularVelocityBefore = body.angularVelocity;
-
+        const Body& body = m_built.world.body(m_built.bodies[index]);
         // a target is turned into one impulse at one point, or rejected with the reason
+        Vec3 impulse = spec.impulse.value_or(Vec3(0.0));
+        Vec3 offset = spec.offset.value_or(Vec3(0.0));
         if (spec.isTarget()) {
             const Vec3 targetAngularVelocity =
                 spec.targetAngularVelocity.value_or(body.angularVelocity);
@@ -113,19 +107,11 @@ StepReport Runner::step(Real until)
                                     std::string("target cannot be reached by one impulse: ") +
                                         describe(solved.status));
             }
-            applied.solvedFromTarget = true;
-            applied.impulse = solved.impulse;
-            applied.offset = solved.offset;
-        } else {
-            applied.impulse = spec.impulse.value_or(Vec3(0.0));
-            applied.offset = spec.offset.value_or(Vec3(0.0));
+            impulse = solved.impulse;
+            offset = solved.offset;
         }
-        const Vec3 worldPoint = body.position + applied.offset;
-        m_built.world.applyImpulse(id, applied.impulse, worldPoint);
-
-        const Body& after = m_built.world.body(id);
-        applied.velocityAfter = after.linearVelocity;
-        applied.angularVelocityAfter = after.angularVelocity;
+        AppliedImpulse applied = applyNow(index, impulse, offset, spec.label, spec.isTarget());
+        applied.time = spec.at;
         report.impulses.push_back(applied);
         ++m_nextImpulse;
     }
@@ -135,6 +121,26 @@ StepReport Runner::step(Real until)
     appendEvents(m_built.world, report);
     ++m_stepCount;
     return report;
+}
+
+AppliedImpulse Runner::applyNow(std::size_t bodyIndex, const Vec3& impulse, const Vec3& offset,
+                                const std::string& label, bool solvedFromTarget)
+{
+    const BodyId id = m_built.bodies.at(bodyIndex);
+    const Body& before = m_built.world.body(id);
+    AppliedImpulse applied{.time = time(),
+                           .bodyIndex = bodyIndex,
+                           .label = label,
+                           .solvedFromTarget = solvedFromTarget,
+                           .impulse = impulse,
+                           .offset = offset,
+                           .velocityBefore = before.linearVelocity,
+                           .angularVelocityBefore = before.angularVelocity};
+    m_built.world.applyImpulse(id, impulse, before.position + offset);
+    const Body& after = m_built.world.body(id);
+    applied.velocityAfter = after.linearVelocity;
+    applied.angularVelocityAfter = after.angularVelocity;
+    return applied;
 }
 
 } // namespace tumble::scenario

@@ -69,6 +69,10 @@ public:
     /// and such a shortened step must be the last. Throws ScenarioError when a target impulse is
     /// unreachable.
     StepReport step(Real until = std::numeric_limits<Real>::infinity());
+    /// Applies `impulse` now to body `bodyIndex` at `offset` from its centre of mass and returns
+    /// the record of it, velocities before and after (a scheduled entry's, or the impulse tool's).
+    AppliedImpulse applyNow(std::size_t bodyIndex, const Vec3& impulse, const Vec3& offset,
+                            const std::string& label, bool solvedFromTarget);
 
 private:
     Scenario m_scenario;
