@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <vector>
 
@@ -241,6 +242,41 @@ TEST(IslandSolverCost, ASettledPyramidCostsOneSweepAStep)
         sweeps += statistics.sweeps;
     }
     EXPECT_LE(sweeps, 2u * 60u);
+}
+
+TEST(IslandMembership, ABodyInAnotherBodysBoxButApartKeepsTheExactPath)
+{
+    // a 6 m board turned 45 degrees about y fills a 4.4 m square box; a small cube 2.1 m from
+    // the board's axis, inside that box, can touch nothing in the step: both fly as they would
+    // alone (10.4), bit for bit, and no island forms
+    const BodyDef board{.shape = Cuboid{Vec3(6.0, 0.2, 0.2)},
+                        .position = Vec3(0.0, 20.0, 0.0),
+                        .orientation = axisAngle(Vec3(0.0, 1.0, 0.0), 0.25 * std::numbers::pi),
+                        .linearVelocity = Vec3(0.0, 1.0, 0.0),
+                        .angularVelocity = Vec3(0.0, 0.0, 0.3)};
+    const BodyDef cube{.shape = Cuboid{Vec3(0.2)},
+                       .position = Vec3(1.5, 20.0, 1.5),
+                       .linearVelocity = Vec3(0.0, 1.0, 0.0),
+                       .angularVelocity = Vec3(0.2, 0.0, 0.1)};
+    World together(WorldSettings{});
+    const BodyId boardTogether = together.createBody(board);
+    const BodyId cubeTogether = together.createBody(cube);
+    World boardAlone(WorldSettings{});
+    const BodyId boardOnly = boardAlone.createBody(board);
+    World cubeAlone(WorldSettings{});
+    const BodyId cubeOnly = cubeAlone.createBody(cube);
+    for (int step = 0; step < 30; ++step) {
+        together.step(1.0 / 60);
+        boardAlone.step(1.0 / 60);
+        cubeAlone.step(1.0 / 60);
+        EXPECT_EQ(together.solverStatistics().islands, 0u) << "step " << step;
+    }
+    const auto sameState = [](const Body& a, const Body& b) {
+        return a.position == b.position && a.orientation == b.orientation &&
+               a.linearVelocity == b.linearVelocity && a.angularVelocity == b.angularVelocity;
+    };
+    EXPECT_TRUE(sameState(together.body(boardTogether), boardAlone.body(boardOnly)));
+    EXPECT_TRUE(sameState(together.body(cubeTogether), cubeAlone.body(cubeOnly)));
 }
 
 TEST(IslandSleep, AStackSleepsAsAWholeAndWakesAsAWhole)

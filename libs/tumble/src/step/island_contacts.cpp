@@ -3,6 +3,7 @@
 
 #include "collision/collide_cuboid_cuboid.hpp"
 #include "collision/collide_cuboid_half_space.hpp"
+#include "collision/cuboid_separating_axis.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -92,6 +93,15 @@ Material mixMaterials(const Material& dynamic, const std::optional<Material>& ot
     mixed.staticFriction =
         std::sqrt(dynamic.staticFrictionOrKinetic() * other->staticFrictionOrKinetic());
     return mixed;
+}
+
+bool mayTouch(const Body& a, const Body& b, const Vec3& gravity, Real horizon, Real tolerance)
+{
+    const Real margin = tolerance + reachOver(a, gravity, horizon) + reachOver(b, gravity, horizon);
+    return findContactAxis(cuboidFrame({a.position, a.orientation}, a.shape.halfExtents()),
+                           cuboidFrame({b.position, b.orientation}, b.shape.halfExtents()),
+                           margin)
+        .has_value();
 }
 
 void findIslandContacts(const CoupledIsland& island, std::span<const BodySlot> slots,

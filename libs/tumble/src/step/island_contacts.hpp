@@ -37,6 +37,12 @@ struct IslandContact {
 /// else the larger restitution and the geometric means of the friction coefficients.
 Material mixMaterials(const Material& dynamic, const std::optional<Material>& other);
 
+/// Whether two bodies can come within the contact tolerance of each other over `horizon`
+/// seconds: no separating axis (9.2) parts them by more than the tolerance plus how far each can
+/// move (the speculative margin of findIslandContacts). A pair whose swept boxes overlap but that
+/// fails this has no contact point in the step, and joins no island (10.4).
+bool mayTouch(const Body& a, const Body& b, const Vec3& gravity, Real horizon, Real tolerance);
+
 /// Contacts of the island's bodies at their current poses, every point within a speculative
 /// margin that covers how far the two sides can approach each other over `horizon` seconds.
 void findIslandContacts(const CoupledIsland& island, std::span<const BodySlot> slots,
