@@ -63,12 +63,35 @@ std::vector<ContactWork> shareIslandWork(std::span<const SolverBody> bodies,
     return work;
 }
 
+/// The vectors of an island's step. Each thread keeps one set from island to island and step to
+/// step: the constraints of Jolt's pyramid take 14 MB, which a fresh vector would have the
+/// system map and zero again every step.
+struct IslandBuffers {
+    std::vector<SolverBody> bodies;
+    std::vector<IslandContact> contacts;
+    std::vector<ContactConstraint> constraints;
+    BodyConstraintLists constraintsOf;
+    std::vector<Real> energies;
+    std::vector<Vec3> velocityStart;
+    std::vector<Vec3> angularVelocityStart;
+    std::vector<GapMotion> gapMotions;
+};
+
+IslandBuffers& threadBuffers()
+{
+    thread_local IslandBuffers buffers;
+    return buffers;
+}
+
 class CoupledStep {
 public:
     CoupledStep(const CoupledIsland& island, std::span<BodySlot> slots, const StepContext& context,
-                StepEvents& events)
+                StepEvents& events, IslandBuffers& buffers)
         : m_island(island), m_slots(slots), m_context(context), m_settings(context.settings),
-          m_events(events)
+          m_events(events), m_bodies(buffers.bodies), m_contacts(buffers.contacts),
+          m_constraints(buffers.constraints), m_constraintsOf(buffers.constraintsOf),
+          m_energies(buffers.energies), m_velocityStart(buffers.velocityStart),
+          m_angularVelocityStart(buffers.angularVelocityStart), m_gapMotions(buffers.gapMotions)
     {
     }
 
@@ -97,16 +120,16 @@ private:
     const StepContext& m_context;
     const WorldSettings& m_settings;
     StepEvents& m_events;
-    std::vector<SolverBody> m_bodies;
-    std::vector<IslandContact> m_contacts;
-    std::vector<ContactConstraint> m_constraints;
-    BodyConstraintLists m_constraintsOf;
+    std::vector<SolverBody>& m_bodies;
+    std::vector<IslandContact>& m_contacts;
+    std::vector<ContactConstraint>& m_constraints;
+    BodyConstraintLists& m_constraintsOf;
     /// Each body's energy now, carried from stage to stage (8.3).
-    std::vector<Real> m_energies;
-    std::vector<Vec3> m_velocityStart;
-    std::vector<Vec3> m_angularVelocityStart;
+    std::vector<Real>& m_energies;
+    std::vector<Vec3>& m_velocityStart;
+    std::vector<Vec3>& m_angularVelocityStart;
     /// Each constraint's gap motion over the last solve of the current sub-step (11.8).
-    std::vector<GapMotion> m_gapMotions;
+    std::vector<GapMotion>& m_gapMotions;
     /// Time into the step at which the current sub-step starts, s.
     Real m_elapsed = 0.0;
 };
@@ -336,7 +359,7 @@ void CoupledStep::finishSubstep(Real tau)
 void advanceCoupled(const CoupledIsland& island, std::span<BodySlot> slots,
                     const StepContext& context, Real dt, StepEvents& events)
 {
-    CoupledStep(island, slots, context, events).run(dt);
+    CoupledStep(island, slots, context, events, threadBuffers()).run(dt);
 }
 
 } // namespace tumble
