@@ -52,6 +52,9 @@ std::vector<Entry> entries() {
 #ifdef TUMBLE_PEER_MUJOCO
     list.push_back({detail::mujocoName(), &detail::runMujoco});
 #endif
+#ifdef TUMBLE_PEER_JOLT
+    list.push_back({detail::joltName(), &detail::runJolt});
+#endif
     return list;
 }
 

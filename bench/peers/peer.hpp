@@ -1,7 +1,8 @@
 #pragma once
 
-// Plain-data interface to the peer engines (Bullet, ODE, MuJoCo) that the benchmark compares tumble
-// against. It deliberately needs no tumble header, so the peers can be built and run on their own.
+// Plain-data interface to the peer engines (Bullet, ODE, MuJoCo, and Jolt from an external build)
+// that the benchmark compares tumble against. It deliberately needs no tumble header, so the peers
+// can be built and run on their own.
 
 #include <array>
 #include <stdexcept>
@@ -34,7 +35,7 @@ struct PeerScene {
 };
 
 struct PeerResult {
-    std::string engine;     ///< e.g. "Bullet 3.24", "ODE 0.16.2", "MuJoCo 2.2.2"
+    std::string engine;     ///< e.g. "Bullet 3.24", "ODE 0.16.2", "MuJoCo 2.2.2", "Jolt 5.5.1 (3b47ec39)"
     std::string settings;   ///< one line: solver, contact model, sleeping thresholds, ...
     double stepSeconds = 0; ///< wall time of the stepping loop only (steady_clock)
     /// Bodies asleep/disabled at the end, or with |v| and |w| below 1e-3 where the engine has no

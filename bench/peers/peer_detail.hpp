@@ -30,5 +30,9 @@ PeerResult runOde(const PeerScene& scene);
 std::string mujocoName();
 PeerResult runMujoco(const PeerScene& scene);
 #endif
+#ifdef TUMBLE_PEER_JOLT
+std::string joltName();
+PeerResult runJolt(const PeerScene& scene);
+#endif
 
 } // namespace tumble::bench::detail
