@@ -4,7 +4,7 @@
 # checkout (its Jolt/ and Build/ folders are all that is read). The build goes
 # outside the repository, so no Jolt code or object ever lands in tumble's tree.
 #
-#   tools/build-jolt-peer.sh /work/ext/JoltPhysics [build-dir]
+#   tools/build-jolt-peer.sh ../JoltPhysics [build-dir]   (build-dir: ../jolt-build beside the checkout)
 #
 # Distribution is Jolt's Release (-O3) without its profiler, debug renderer and
 # floating-point exception checks, the configuration Jolt times itself in.
@@ -18,7 +18,7 @@ if [[ $# -lt 1 ]]; then
     exit 2
 fi
 src=$(cd "$1" && pwd)
-build=${2:-/work/ext/jolt-build}
+build=${2:-$(dirname "$src")/jolt-build}
 [[ -f "$src/Build/CMakeLists.txt" ]] || { echo "$src has no Build/CMakeLists.txt" >&2; exit 2; }
 
 # GPU compute back ends are off: the peer uses only rigid bodies on the CPU.
