@@ -210,40 +210,6 @@ TEST(ArrivalInTime, ACubeDroppedOnARestingCubeArrivesAtTheFreeFallTimeAndSpeed)
     EXPECT_NEAR(landing->approachSpeed, std::sqrt(2.0 * kGravity * kGap), 1e-9);
 }
 
-TEST(IslandSolverCost, ASettledPyramidCostsOneSweepAStep)
-{
-    // Jolt's pyramid with five layers (55 cubes of size 2, 8000 kg, mu = 0.2, dropped 0.5 m onto
-    // each other): once settled, last step's impulses are this step's answer (11.6), and the
-    // points that come and go as corners touch start from zero (11.13)
-    World world(WorldSettings{.allowSleep = false});
-    world.setGround(Plane{});
-    constexpr int kLayers = 5;
-    std::size_t cubes = 0;
-    for (int i = 0; i < kLayers; ++i) {
-        const Real shift = i % 2 == 1 ? 1.0 : 0.0;
-        for (int j = i / 2; j < kLayers - (i + 1) / 2; ++j) {
-            for (int k = i / 2; k < kLayers - (i + 1) / 2; ++k) {
-                const Vec3 at(-kLayers + 2 * j + shift, 1.0 + 2.5 * i, -kLayers + 2 * k + shift);
-                addCube(world, 2.0, 8000.0, at, Vec3(0.0),
-                        Material{.restitution = 0.0, .friction = 0.2});
-                ++cubes;
-            }
-        }
-    }
-    for (int step = 0; step < 180; ++step) {
-        world.step(1.0 / 60);
-    }
-    std::size_t sweeps = 0;
-    for (int step = 0; step < 60; ++step) {
-        world.step(1.0 / 60);
-        const SolverStatistics& statistics = world.solverStatistics();
-        EXPECT_EQ(statistics.bodies, cubes);
-        EXPECT_EQ(statistics.solves, 1u) << "no impact and no cut: one sub-step solve";
-        sweeps += statistics.sweeps;
-    }
-    EXPECT_LE(sweeps, 2u * 60u);
-}
-
 TEST(IslandMembership, ABodyInAnotherBodysBoxButApartKeepsTheExactPath)
 {
     // a 6 m board turned 45 degrees about y fills a 4.4 m square box; a small cube 2.1 m from

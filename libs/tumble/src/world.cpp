@@ -254,7 +254,7 @@ int World::threadCount() const
 
 StepContext World::stepContext() const
 {
-    return StepContext{m_settings, m_ground, m_time, m_planes, m_groundMaterial};
+    return StepContext{m_settings, m_ground, m_time, m_planes, m_groundMaterial, threadCount()};
 }
 
 void World::step(Real dt)

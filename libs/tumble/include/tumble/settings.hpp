@@ -55,10 +55,12 @@ struct WorldSettings {
     /// Whether step() keeps a ContactRecord of every contact solve (the contact ledger).
     /// Default false.
     bool recordContacts = false;
-    /// Threads step() spreads the bodies over (1: the calling thread only; 0: one per core).
-    /// Bodies touch only the ground, never each other, so each is advanced on its own and the
-    /// results are identical whatever the number (docs/architecture.md, "Many bodies").
-    /// Default 1.
+    /// Threads step() spreads its work over (1: the calling thread only; 0: one per core): the
+    /// bodies alone and the islands of touching bodies, and within a large island the contacts
+    /// of each colour of its sweeps. The results are identical whatever the number
+    /// (docs/architecture.md, "Many bodies"; docs/physics/11-island-solver.md, (11.5c)). The
+    /// threads of an island meet at a barrier after each colour: on cores shared with other
+    /// work, OMP_WAIT_POLICY=passive keeps a waiting thread from spinning. Default 1.
     int threads = 1;
 };
 

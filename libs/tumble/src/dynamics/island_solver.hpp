@@ -8,6 +8,10 @@
 
 namespace tumble {
 
+/// (11.5c): a solve over at least this many points sweeps colour by colour, whatever the number
+/// of threads, so its result does not depend on that number; a smaller one keeps input order.
+inline constexpr std::size_t kColouredSweepPoints = 1024;
+
 /// What a constraint's target is for (11.4).
 enum class ConstraintTarget : std::uint8_t {
     /// An impact: Newton's restitution target -e vn where the approach is faster than the
@@ -34,8 +38,9 @@ void prepareConstraint(ContactConstraint& constraint, std::span<const SolverBody
                        const ConstraintTargetSettings& settings);
 
 /// (11.4a) Poisson's restitution after a compression solve: each point whose approach was fast
-/// enough gets e times its compression impulse more, along the normal.
-void applyRestitution(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies);
+/// enough gets e times its compression impulse more, along the normal. Returns whether any
+/// point got an impulse (none does when every such point has e = 0).
+bool applyRestitution(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies);
 
 /// Applies the constraints' impulses to their bodies (warm starting, (11.6)).
 void warmStart(std::span<const ContactConstraint> constraints, std::span<SolverBody> bodies);
@@ -43,8 +48,10 @@ void warmStart(std::span<const ContactConstraint> constraints, std::span<SolverB
 /// Gauss-Seidel sweeps of normal (11.4) then friction (11.5) impulses with accumulated clamping,
 /// until no impulse changes by more than `convergence` times the largest, or no point's velocity
 /// is corrected by more than `velocityTolerance` (m/s) in a sweep (11.5a), or `iterations`
-/// sweeps. Returns the sweeps done.
+/// sweeps. A solve of many points sweeps colour by colour, each colour over `threads` threads,
+/// with the same result for any number of them (11.5c). Returns the sweeps done.
 int solveConstraints(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
-                     int iterations, Real convergence, Real velocityTolerance = 0.0);
+                     int iterations, Real convergence, Real velocityTolerance = 0.0,
+                     int threads = 1);
 
 } // namespace tumble

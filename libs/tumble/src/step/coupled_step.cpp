@@ -6,6 +6,7 @@
 #include "dynamics/integrator.hpp"
 #include "dynamics/island_solver.hpp"
 #include "step/arrivals.hpp"
+#include "step/contact_colour_order.hpp"
 #include "step/island_contacts.hpp"
 #include "step/island_events.hpp"
 #include "step/island_motion.hpp"
@@ -69,6 +70,7 @@ std::vector<ContactWork> shareIslandWork(std::span<const SolverBody> bodies,
 struct IslandBuffers {
     std::vector<SolverBody> bodies;
     std::vector<IslandContact> contacts;
+    std::vector<IslandContact> spareContacts;
     std::vector<ContactConstraint> constraints;
     BodyConstraintLists constraintsOf;
     std::vector<Real> energies;
@@ -89,6 +91,7 @@ public:
                 StepEvents& events, IslandBuffers& buffers)
         : m_island(island), m_slots(slots), m_context(context), m_settings(context.settings),
           m_events(events), m_bodies(buffers.bodies), m_contacts(buffers.contacts),
+          m_spareContacts(buffers.spareContacts),
           m_constraints(buffers.constraints), m_constraintsOf(buffers.constraintsOf),
           m_energies(buffers.energies), m_velocityStart(buffers.velocityStart),
           m_angularVelocityStart(buffers.angularVelocityStart), m_gapMotions(buffers.gapMotions)
@@ -122,6 +125,7 @@ private:
     StepEvents& m_events;
     std::vector<SolverBody>& m_bodies;
     std::vector<IslandContact>& m_contacts;
+    std::vector<IslandContact>& m_spareContacts;
     std::vector<ContactConstraint>& m_constraints;
     BodyConstraintLists& m_constraintsOf;
     /// Each body's energy now, carried from stage to stage (8.3).
@@ -157,6 +161,7 @@ void CoupledStep::run(Real dt)
         const Real remaining = dt - m_elapsed;
         // narrow phase: every point within reach of the rest of the step
         findIslandContacts(m_island, m_slots, m_context, remaining, m_contacts);
+        orderContactsByColour(m_contacts, count + 1, m_spareContacts);
         buildConstraints(m_contacts, m_slots, m_island, m_constraints);
         m_gapMotions.clear();
         ++m_events.statistics.substeps;
@@ -210,23 +215,25 @@ void CoupledStep::resolveImpacts(Real time)
     }
     // (11.4a) Poisson's restitution: compression until no point approaches, each point's
     // restitution share e lambda_c of its compression impulse, and a plastic pass over any point
-    // that share left approaching
+    // that share left approaching; with no share (e = 0) nothing is left to pass over
     countSolve(
-        solveConstraints(impact, m_bodies, m_settings.solverIterations, kImpactConvergence));
-    applyRestitution(impact, m_bodies);
-    std::vector<ContactConstraint> correction = impact;
-    for (ContactConstraint& c : correction) {
-        c.normalImpulse = 0.0;
-        c.tangentImpulse1 = 0.0;
-        c.tangentImpulse2 = 0.0;
-        c.frictionShift = 0.0;
-    }
-    countSolve(
-        solveConstraints(correction, m_bodies, m_settings.solverIterations, kImpactConvergence));
-    for (std::size_t k = 0; k < impact.size(); ++k) {
-        impact[k].normalImpulse += correction[k].normalImpulse;
-        impact[k].tangentImpulse1 += correction[k].tangentImpulse1;
-        impact[k].tangentImpulse2 += correction[k].tangentImpulse2;
+        solveConstraints(impact, m_bodies, m_settings.solverIterations, kImpactConvergence, 0.0,
+                         m_context.threads));
+    if (applyRestitution(impact, m_bodies)) {
+        std::vector<ContactConstraint> correction = impact;
+        for (ContactConstraint& c : correction) {
+            c.normalImpulse = 0.0;
+            c.tangentImpulse1 = 0.0;
+            c.tangentImpulse2 = 0.0;
+            c.frictionShift = 0.0;
+        }
+        countSolve(solveConstraints(correction, m_bodies, m_settings.solverIterations,
+                                    kImpactConvergence, 0.0, m_context.threads));
+        for (std::size_t k = 0; k < impact.size(); ++k) {
+            impact[k].normalImpulse += correction[k].normalImpulse;
+            impact[k].tangentImpulse1 += correction[k].tangentImpulse1;
+            impact[k].tangentImpulse2 += correction[k].tangentImpulse2;
+        }
     }
     const std::vector<ContactWork> work = shareIslandWork(m_bodies, kineticBefore);
     for (std::size_t i = 0; i < m_island.bodies.size(); ++i) {
@@ -288,7 +295,8 @@ void CoupledStep::solveSubstep(Real tau)
     loadWarmStart(m_island, m_slots, m_contacts, m_constraints, tau, m_settings);
     warmStart(m_constraints, m_bodies);
     countSolve(solveConstraints(m_constraints, m_bodies, m_settings.solverIterations,
-                                kRestingConvergence, restingVelocityTolerance(tau)));
+                                kRestingConvergence, restingVelocityTolerance(tau),
+                                m_context.threads));
 }
 
 Real CoupledStep::earliestArrival(Real tau)
@@ -315,7 +323,7 @@ Real CoupledStep::earliestArrival(Real tau)
     }
     warmStart(inContact, free);
     solveConstraints(inContact, free, m_settings.solverIterations, kRestingConvergence,
-                     restingVelocityTolerance(tau));
+                     restingVelocityTolerance(tau), m_context.threads);
     gapMotions(m_constraints, free, m_velocityStart, m_angularVelocityStart, tau, m_gapMotions);
     return tumble::earliestArrival(m_constraints, m_gapMotions, tau, touching,
                                    m_settings.restitutionThreshold);

@@ -19,6 +19,8 @@ struct StepContext {
     std::span<const StaticPlane> planes{};
     /// The ground's own material, or none (its contacts take the dynamic body's).
     std::optional<Material> groundMaterial{};
+    /// Threads one island's sweeps may spread over (settings.threads resolved, at least 1).
+    int threads = 1;
 };
 
 } // namespace tumble

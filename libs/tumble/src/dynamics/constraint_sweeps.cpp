@@ -1,0 +1,185 @@
+// Gauss-Seidel sweeps over an island's contact points, in input order for a small island and
+// colour by colour for a large one, whose colours spread over threads
+// (docs/physics/11-island-solver.md, (11.4), (11.5), (11.5a), (11.5c)).
+#include "dynamics/constraint_colouring.hpp"
+#include "dynamics/friction_cone.hpp"
+#include "dynamics/island_solver.hpp"
+#include "dynamics/point_impulses.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#ifdef TUMBLE_HAVE_OPENMP
+#include <omp.h>
+#endif
+
+namespace tumble {
+
+namespace {
+
+/// (11.5c): the threads share a coloured sweep only when each has at least this many runs of a
+/// colour on average: a colour ends at a barrier, which smaller shares would not pay for. The
+/// result is the same either way.
+constexpr std::size_t kRunsPerThread = 32;
+
+/// The largest impulse change, impulse and velocity correction of a sweep (11.5a).
+struct SweepMaxima {
+    Real change = 0.0;
+    Real impulse = 0.0;
+    Real correction = 0.0;
+};
+
+/// One point's normal step (11.4) then friction step (11.5), with accumulated clamping.
+void solvePoint(ContactConstraint& c, std::span<SolverBody> bodies, SweepMaxima& maxima)
+{
+    SolverBody& a = bodies[c.bodyA];
+    SolverBody& b = bodies[c.bodyB];
+    // (11.4): normal impulse with accumulated clamping, lambda_n >= 0
+    const Real normalA = pointVelocityAlong(a, c.normal, c.angularA[0]);
+    const Real normalB = pointVelocityAlong(b, c.normal, c.angularB[0]);
+    const Real normalImpulse = std::max(
+        0.0, c.normalImpulse + c.normalMass * (c.targetNormalVelocity - (normalB - normalA)));
+    const Real normalChange = normalImpulse - c.normalImpulse;
+    c.normalImpulse = normalImpulse;
+    applyNormal(c, a, b, normalChange, normalA, normalB);
+    // (11.5): the friction step of maximal dissipation on the cone (6.4)
+    const std::array<Real, 4> tangential{pointVelocityAlong(a, c.tangent1, c.angularA[1]),
+                                         pointVelocityAlong(a, c.tangent2, c.angularA[2]),
+                                         pointVelocityAlong(b, c.tangent1, c.angularB[1]),
+                                         pointVelocityAlong(b, c.tangent2, c.angularB[2])};
+    const FrictionImpulse friction =
+        frictionOnCone(c.tangentK, c.tangentMass, c.tangentImpulse1, c.tangentImpulse2,
+                       c.friction * c.normalImpulse, tangential[2] - tangential[0],
+                       tangential[3] - tangential[1], c.frictionShift);
+    const Real impulse1 = friction.impulse1;
+    const Real impulse2 = friction.impulse2;
+    const Real change1 = impulse1 - c.tangentImpulse1;
+    const Real change2 = impulse2 - c.tangentImpulse2;
+    c.tangentImpulse1 = impulse1;
+    c.tangentImpulse2 = impulse2;
+    applyFriction(c, a, b, change1, change2, tangential);
+    maxima.change = std::max(
+        {maxima.change, std::abs(normalChange), std::abs(change1), std::abs(change2)});
+    maxima.impulse = std::max(
+        {maxima.impulse, normalImpulse, std::sqrt(impulse1 * impulse1 + impulse2 * impulse2)});
+    // the velocity the step put right, |K delta lambda| (11.5a)
+    const Real tangential1 = c.tangentK[0] * change1 + c.tangentK[1] * change2;
+    const Real tangential2 = c.tangentK[2] * change1 + c.tangentK[3] * change2;
+    maxima.correction =
+        std::max({maxima.correction, std::abs(normalChange) / c.normalMass,
+                  std::sqrt(tangential1 * tangential1 + tangential2 * tangential2)});
+}
+
+/// (11.5c) The order of a coloured sweep: runs of consecutive points of one pair of bodies (a
+/// contact's manifold), coloured so that no colour moves a dynamic body twice.
+struct ColouredSchedule {
+    /// Run k is constraints [runStart[k], runStart[k + 1]).
+    std::vector<std::uint32_t> runStart;
+    ConstraintColours colours;
+};
+
+ColouredSchedule colourRuns(std::span<const ContactConstraint> constraints,
+                            std::span<const SolverBody> bodies)
+{
+    ColouredSchedule schedule;
+    std::vector<ProxyPair> runBodies;
+    for (std::size_t i = 0; i < constraints.size(); ++i) {
+        const ContactConstraint& c = constraints[i];
+        if (i == 0 || c.bodyA != constraints[i - 1].bodyA ||
+            c.bodyB != constraints[i - 1].bodyB) {
+            schedule.runStart.push_back(static_cast<std::uint32_t>(i));
+            runBodies.push_back({c.bodyA, c.bodyB});
+        }
+    }
+    schedule.runStart.push_back(static_cast<std::uint32_t>(constraints.size()));
+    std::vector<std::uint8_t> fixed(bodies.size());
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        fixed[i] = isFixed(bodies[i]) ? 1 : 0;
+    }
+    schedule.colours = colourConstraints(runBodies, fixed, kMaxConstraintColours);
+    return schedule;
+}
+
+void solveRuns(std::span<const std::uint32_t> runs, const ColouredSchedule& schedule,
+               std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
+               SweepMaxima& maxima)
+{
+    for (const std::uint32_t run : runs) {
+        for (std::uint32_t i = schedule.runStart[run]; i < schedule.runStart[run + 1]; ++i) {
+            solvePoint(constraints[i], bodies, maxima);
+        }
+    }
+}
+
+/// One sweep colour by colour; the runs of a colour share no dynamic body, so any split of
+/// them over threads gives the same velocities and impulses as one thread (11.5c).
+SweepMaxima colouredSweep(const ColouredSchedule& schedule,
+                          std::span<ContactConstraint> constraints,
+                          std::span<SolverBody> bodies, [[maybe_unused]] int threads)
+{
+    const ConstraintColours& colours = schedule.colours;
+    const std::size_t runCount = schedule.runStart.size() - 1;
+    if (threads <= 1 ||
+        runCount < kRunsPerThread * static_cast<std::size_t>(threads) * colours.colourCount) {
+        SweepMaxima maxima;
+        for (std::uint32_t colour = 0; colour <= colours.colourCount; ++colour) {
+            solveRuns(colours.colour(colour), schedule, constraints, bodies, maxima);
+        }
+        return maxima;
+    }
+    Real change = 0.0;
+    Real impulse = 0.0;
+    Real correction = 0.0;
+#ifdef TUMBLE_HAVE_OPENMP
+#pragma omp parallel num_threads(threads) reduction(max : change, impulse, correction)
+#endif
+    {
+        SweepMaxima mine;
+        for (std::uint32_t colour = 0; colour < colours.colourCount; ++colour) {
+            const std::span<const std::uint32_t> runs = colours.colour(colour);
+            const auto count = static_cast<std::ptrdiff_t>(runs.size());
+#ifdef TUMBLE_HAVE_OPENMP
+#pragma omp for schedule(static)
+#endif
+            for (std::ptrdiff_t k = 0; k < count; ++k) {
+                solveRuns(runs.subspan(static_cast<std::size_t>(k), 1), schedule, constraints,
+                          bodies, mine);
+            }
+        }
+#ifdef TUMBLE_HAVE_OPENMP
+#pragma omp single
+#endif
+        solveRuns(colours.overflow(), schedule, constraints, bodies, mine);
+        change = std::max(change, mine.change);
+        impulse = std::max(impulse, mine.impulse);
+        correction = std::max(correction, mine.correction);
+    }
+    return {change, impulse, correction};
+}
+
+} // namespace
+
+int solveConstraints(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
+                     int iterations, Real convergence, Real velocityTolerance, int threads)
+{
+    const bool coloured = constraints.size() >= kColouredSweepPoints;
+    const ColouredSchedule schedule =
+        coloured ? colourRuns(constraints, bodies) : ColouredSchedule{};
+    for (int sweep = 1; sweep <= iterations; ++sweep) {
+        SweepMaxima maxima;
+        if (coloured) {
+            maxima = colouredSweep(schedule, constraints, bodies, threads);
+        } else {
+            for (ContactConstraint& c : constraints) {
+                solvePoint(c, bodies, maxima);
+            }
+        }
+        if (maxima.change <= convergence * maxima.impulse ||
+            maxima.correction <= velocityTolerance) {
+            return sweep;
+        }
+    }
+    return iterations;
+}
+
+} // namespace tumble

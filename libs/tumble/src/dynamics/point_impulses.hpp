@@ -1,0 +1,77 @@
+// One contact point's impulses on its two solver bodies, and the work they do: the steps that
+// warm starting, restitution and the sweeps are made of (docs/physics/11-island-solver.md).
+#pragma once
+
+#include "dynamics/contact_constraint.hpp"
+
+#include <array>
+
+namespace tumble {
+
+/// The point velocity of a body along direction d of a constraint, d . v + (r x d) . w (11.2),
+/// from the constraint's angular row `angular` = r x d.
+inline Real pointVelocityAlong(const SolverBody& body, const Vec3& direction, const Vec3& angular)
+{
+    return glm::dot(direction, body.linearVelocity) + glm::dot(angular, body.angularVelocity);
+}
+
+/// Whether a solver body is the island's static geometry, which no impulse moves. Its state is
+/// never written, so the points of one colour may share it across threads (11.5c).
+inline bool isFixed(const SolverBody& body) { return body.invMass == 0.0; }
+
+/// Applies `impulse` times direction d (index `axis`: n, t1, t2) to B and its opposite to A.
+inline void applyAlong(const ContactConstraint& c, SolverBody& a, SolverBody& b,
+                       const Vec3& direction, int axis, Real impulse)
+{
+    if (!isFixed(a)) {
+        a.linearVelocity -= (a.invMass * impulse) * direction;
+        a.angularVelocity -= impulse * c.responseA[axis];
+    }
+    if (!isFixed(b)) {
+        b.linearVelocity += (b.invMass * impulse) * direction;
+        b.angularVelocity += impulse * c.responseB[axis];
+    }
+}
+
+/// The normal step of one point: impulse change `change` along n, from point velocities vA and
+/// vB along n before it. Books its work on each body, P . (u_before + u_after) / 2 (8.2), with
+/// u_after . n = u_before . n -+ change kA or kB.
+inline void applyNormal(const ContactConstraint& c, SolverBody& a, SolverBody& b, Real change,
+                        Real vA, Real vB)
+{
+    applyAlong(c, a, b, c.normal, 0, change);
+    if (!isFixed(a)) {
+        a.normalWork -= change * (vA - 0.5 * change * c.normalKA);
+    }
+    if (!isFixed(b)) {
+        b.normalWork += change * (vB + 0.5 * change * c.normalKB);
+    }
+}
+
+/// The friction step of one point: impulse change (change1, change2) along t1, t2, from point
+/// velocities along t1, t2 before it (A's, then B's); its work as in applyNormal with each
+/// body's 2x2 part of K_t.
+inline void applyFriction(const ContactConstraint& c, SolverBody& a, SolverBody& b, Real change1,
+                          Real change2, const std::array<Real, 4>& velocities)
+{
+    applyAlong(c, a, b, c.tangent1, 1, change1);
+    applyAlong(c, a, b, c.tangent2, 2, change2);
+    const auto halfResponse = [&](const std::array<Real, 3>& k, Real& along1, Real& along2) {
+        along1 = 0.5 * (k[0] * change1 + k[1] * change2);
+        along2 = 0.5 * (k[1] * change1 + k[2] * change2);
+    };
+    if (!isFixed(a)) {
+        Real a1 = 0.0;
+        Real a2 = 0.0;
+        halfResponse(c.tangentKA, a1, a2);
+        a.frictionWork -= change1 * (velocities[0] - a1) + change2 * (velocities[1] - a2);
+    }
+    if (!isFixed(b)) {
+        Real b1 = 0.0;
+        Real b2 = 0.0;
+        halfResponse(c.tangentKB, b1, b2);
+        b.frictionWork += change1 * (velocities[2] + b1) + change2 * (velocities[3] + b2);
+    }
+}
+
+} // namespace tumble
