@@ -30,10 +30,8 @@ struct SweepMaxima {
 };
 
 /// One point's normal step (11.4) then friction step (11.5), with accumulated clamping.
-void solvePoint(ContactConstraint& c, std::span<SolverBody> bodies, SweepMaxima& maxima)
+void solvePoint(ContactConstraint& c, SolverBody& a, SolverBody& b, SweepMaxima& maxima)
 {
-    SolverBody& a = bodies[c.bodyA];
-    SolverBody& b = bodies[c.bodyB];
     // (11.4): normal impulse with accumulated clamping, lambda_n >= 0
     const Real normalA = pointVelocityAlong(a, c.normal, c.angularA[0]);
     const Real normalB = pointVelocityAlong(b, c.normal, c.angularB[0]);
@@ -100,30 +98,28 @@ ColouredSchedule colourRuns(std::span<const ContactConstraint> constraints,
     return schedule;
 }
 
-void solveRuns(std::span<const std::uint32_t> runs, const ColouredSchedule& schedule,
-               std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
-               SweepMaxima& maxima)
-{
-    for (const std::uint32_t run : runs) {
-        for (std::uint32_t i = schedule.runStart[run]; i < schedule.runStart[run + 1]; ++i) {
-            solvePoint(constraints[i], bodies, maxima);
-        }
-    }
-}
-
-/// One sweep colour by colour; the runs of a colour share no dynamic body, so any split of
-/// them over threads gives the same velocities and impulses as one thread (11.5c).
-SweepMaxima colouredSweep(const ColouredSchedule& schedule,
-                          std::span<ContactConstraint> constraints,
-                          std::span<SolverBody> bodies, [[maybe_unused]] int threads)
+/// One pass colour by colour, `step(c, a, b, maxima)` at each point; the runs of a colour share
+/// no dynamic body, so any split of them over threads gives the same velocities and impulses as
+/// one thread (11.5c).
+template <typename Constraint, typename PointStep>
+SweepMaxima colouredPass(const ColouredSchedule& schedule, std::span<Constraint> constraints,
+                         std::span<SolverBody> bodies, int threads, const PointStep& step)
 {
     const ConstraintColours& colours = schedule.colours;
+    const auto solveRuns = [&](std::span<const std::uint32_t> runs, SweepMaxima& maxima) {
+        for (const std::uint32_t run : runs) {
+            for (std::uint32_t i = schedule.runStart[run]; i < schedule.runStart[run + 1]; ++i) {
+                Constraint& c = constraints[i];
+                step(c, bodies[c.bodyA], bodies[c.bodyB], maxima);
+            }
+        }
+    };
     const std::size_t runCount = schedule.runStart.size() - 1;
     if (threads <= 1 ||
         runCount < kRunsPerThread * static_cast<std::size_t>(threads) * colours.colourCount) {
         SweepMaxima maxima;
         for (std::uint32_t colour = 0; colour <= colours.colourCount; ++colour) {
-            solveRuns(colours.colour(colour), schedule, constraints, bodies, maxima);
+            solveRuns(colours.colour(colour), maxima);
         }
         return maxima;
     }
@@ -142,14 +138,13 @@ SweepMaxima colouredSweep(const ColouredSchedule& schedule,
 #pragma omp for schedule(static)
 #endif
             for (std::ptrdiff_t k = 0; k < count; ++k) {
-                solveRuns(runs.subspan(static_cast<std::size_t>(k), 1), schedule, constraints,
-                          bodies, mine);
+                solveRuns(runs.subspan(static_cast<std::size_t>(k), 1), mine);
             }
         }
 #ifdef TUMBLE_HAVE_OPENMP
 #pragma omp single
 #endif
-        solveRuns(colours.overflow(), schedule, constraints, bodies, mine);
+        solveRuns(colours.overflow(), mine);
         change = std::max(change, mine.change);
         impulse = std::max(impulse, mine.impulse);
         correction = std::max(correction, mine.correction);
@@ -168,10 +163,10 @@ int solveConstraints(std::span<ContactConstraint> constraints, std::span<SolverB
     for (int sweep = 1; sweep <= iterations; ++sweep) {
         SweepMaxima maxima;
         if (coloured) {
-            maxima = colouredSweep(schedule, constraints, bodies, threads);
+            maxima = colouredPass(schedule, constraints, bodies, threads, solvePoint);
         } else {
             for (ContactConstraint& c : constraints) {
-                solvePoint(c, bodies, maxima);
+                solvePoint(c, bodies[c.bodyA], bodies[c.bodyB], maxima);
             }
         }
         if (maxima.change <= convergence * maxima.impulse ||
@@ -180,6 +175,42 @@ int solveConstraints(std::span<ContactConstraint> constraints, std::span<SolverB
         }
     }
     return iterations;
+}
+
+void warmStart(std::span<const ContactConstraint> constraints, std::span<SolverBody> bodies,
+               int threads)
+{
+    if (constraints.size() < kColouredSweepPoints) {
+        for (const ContactConstraint& c : constraints) {
+            warmStartPoint(c, bodies[c.bodyA], bodies[c.bodyB]);
+        }
+        return;
+    }
+    // in the order of the sweeps, whatever the number of threads (11.5c)
+    colouredPass(colourRuns(constraints, bodies), constraints, bodies, threads,
+                 [](const ContactConstraint& c, SolverBody& a, SolverBody& b, SweepMaxima&) {
+                     warmStartPoint(c, a, b);
+                 });
+}
+
+void prepareConstraints(std::span<ContactConstraint> constraints,
+                        std::span<const SolverBody> bodies,
+                        const ConstraintTargetSettings& settings, [[maybe_unused]] int threads)
+{
+    const auto count = static_cast<std::ptrdiff_t>(constraints.size());
+    // each constraint reads the bodies and writes only itself
+    if (constraints.size() >= kColouredSweepPoints && threads > 1) {
+#ifdef TUMBLE_HAVE_OPENMP
+#pragma omp parallel for schedule(static) num_threads(threads)
+#endif
+        for (std::ptrdiff_t i = 0; i < count; ++i) {
+            prepareConstraint(constraints[static_cast<std::size_t>(i)], bodies, settings);
+        }
+        return;
+    }
+    for (ContactConstraint& c : constraints) {
+        prepareConstraint(c, bodies, settings);
+    }
 }
 
 } // namespace tumble

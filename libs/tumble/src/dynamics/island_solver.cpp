@@ -109,30 +109,4 @@ bool applyRestitution(std::span<ContactConstraint> constraints, std::span<Solver
     return applied;
 }
 
-void warmStart(std::span<const ContactConstraint> constraints, std::span<SolverBody> bodies)
-{
-    // the whole cached impulse, its work booked under the normal heading as one impulse
-    for (const ContactConstraint& c : constraints) {
-        SolverBody& a = bodies[c.bodyA];
-        SolverBody& b = bodies[c.bodyB];
-        const std::array<Vec3, 3> directions{c.normal, c.tangent1, c.tangent2};
-        const std::array<Real, 3> impulses{c.normalImpulse, c.tangentImpulse1, c.tangentImpulse2};
-        Real workA = 0.0;
-        Real workB = 0.0;
-        for (int axis = 0; axis < 3; ++axis) {
-            workA -= impulses[axis] * pointVelocityAlong(a, directions[axis], c.angularA[axis]);
-            workB += impulses[axis] * pointVelocityAlong(b, directions[axis], c.angularB[axis]);
-        }
-        for (int axis = 0; axis < 3; ++axis) {
-            applyAlong(c, a, b, directions[axis], axis, impulses[axis]);
-        }
-        for (int axis = 0; axis < 3; ++axis) {
-            workA -= impulses[axis] * pointVelocityAlong(a, directions[axis], c.angularA[axis]);
-            workB += impulses[axis] * pointVelocityAlong(b, directions[axis], c.angularB[axis]);
-        }
-        a.normalWork += 0.5 * workA;
-        b.normalWork += 0.5 * workB;
-    }
-}
-
 } // namespace tumble

@@ -37,13 +37,20 @@ struct ConstraintTargetSettings {
 void prepareConstraint(ContactConstraint& constraint, std::span<const SolverBody> bodies,
                        const ConstraintTargetSettings& settings);
 
+/// prepareConstraint for each constraint, those of a large island spread over `threads`.
+void prepareConstraints(std::span<ContactConstraint> constraints,
+                        std::span<const SolverBody> bodies,
+                        const ConstraintTargetSettings& settings, int threads);
+
 /// (11.4a) Poisson's restitution after a compression solve: each point whose approach was fast
 /// enough gets e times its compression impulse more, along the normal. Returns whether any
 /// point got an impulse (none does when every such point has e = 0).
 bool applyRestitution(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies);
 
 /// Applies the constraints' impulses to their bodies (warm starting, (11.6)).
-void warmStart(std::span<const ContactConstraint> constraints, std::span<SolverBody> bodies);
+/// Like solveConstraints, a large set of points is visited colour by colour over `threads`.
+void warmStart(std::span<const ContactConstraint> constraints, std::span<SolverBody> bodies,
+               int threads = 1);
 
 /// Gauss-Seidel sweeps of normal (11.4) then friction (11.5) impulses with accumulated clamping,
 /// until no impulse changes by more than `convergence` times the largest, or no point's velocity

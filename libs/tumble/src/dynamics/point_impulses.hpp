@@ -74,4 +74,31 @@ inline void applyFriction(const ContactConstraint& c, SolverBody& a, SolverBody&
     }
 }
 
+/// Applies a point's whole cached impulse (warm starting, (11.6)); its work is booked under the
+/// normal heading as one impulse, P . (u_before + u_after) / 2 (8.2).
+inline void warmStartPoint(const ContactConstraint& c, SolverBody& a, SolverBody& b)
+{
+    const std::array<Vec3, 3> directions{c.normal, c.tangent1, c.tangent2};
+    const std::array<Real, 3> impulses{c.normalImpulse, c.tangentImpulse1, c.tangentImpulse2};
+    Real workA = 0.0;
+    Real workB = 0.0;
+    for (int axis = 0; axis < 3; ++axis) {
+        workA -= impulses[axis] * pointVelocityAlong(a, directions[axis], c.angularA[axis]);
+        workB += impulses[axis] * pointVelocityAlong(b, directions[axis], c.angularB[axis]);
+    }
+    for (int axis = 0; axis < 3; ++axis) {
+        applyAlong(c, a, b, directions[axis], axis, impulses[axis]);
+    }
+    for (int axis = 0; axis < 3; ++axis) {
+        workA -= impulses[axis] * pointVelocityAlong(a, directions[axis], c.angularA[axis]);
+        workB += impulses[axis] * pointVelocityAlong(b, directions[axis], c.angularB[axis]);
+    }
+    if (!isFixed(a)) {
+        a.normalWork += 0.5 * workA;
+    }
+    if (!isFixed(b)) {
+        b.normalWork += 0.5 * workB;
+    }
+}
+
 } // namespace tumble

@@ -288,12 +288,10 @@ void CoupledStep::solveSubstep(Real tau)
     const ConstraintTargetSettings targets{ConstraintTarget::Substep, tau,
                                            m_settings.contactTolerance,
                                            m_settings.restitutionThreshold};
-    for (ContactConstraint& c : m_constraints) {
-        prepareConstraint(c, m_bodies, targets);
-    }
+    prepareConstraints(m_constraints, m_bodies, targets, m_context.threads);
     keepExactArrivals(m_constraints, m_gapMotions, tau, m_settings.contactTolerance);
     loadWarmStart(m_island, m_slots, m_contacts, m_constraints, tau, m_settings);
-    warmStart(m_constraints, m_bodies);
+    warmStart(m_constraints, m_bodies, m_context.threads);
     countSolve(solveConstraints(m_constraints, m_bodies, m_settings.solverIterations,
                                 kRestingConvergence, restingVelocityTolerance(tau),
                                 m_context.threads));
@@ -321,7 +319,7 @@ Real CoupledStep::earliestArrival(Real tau)
             inContact.push_back(c);
         }
     }
-    warmStart(inContact, free);
+    warmStart(inContact, free, m_context.threads);
     solveConstraints(inContact, free, m_settings.solverIterations, kRestingConvergence,
                      restingVelocityTolerance(tau), m_context.threads);
     gapMotions(m_constraints, free, m_velocityStart, m_angularVelocityStart, tau, m_gapMotions);
