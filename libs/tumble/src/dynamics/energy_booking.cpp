@@ -22,4 +22,30 @@ Real bookCorrection(Body& body, Real energyBefore, const Vec3& gravity)
     return energyAfter;
 }
 
+std::vector<ContactWork> shareIslandWork(std::span<const SolverBody> bodies,
+                                         std::span<const Real> kineticBefore)
+{
+    const std::size_t count = kineticBefore.size();
+    Real normal = 0.0;
+    Real friction = 0.0;
+    Real kinetic = 0.0;
+    Real mass = 0.0;
+    for (std::size_t i = 0; i < count; ++i) {
+        normal += bodies[i].normalWork;
+        friction += bodies[i].frictionWork;
+        kinetic += kineticBefore[i];
+        mass += 1.0 / bodies[i].invMass;
+    }
+    std::vector<ContactWork> work(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        const Real share = kinetic > 0.0 ? kineticBefore[i] / kinetic
+                                         : (1.0 / bodies[i].invMass) / mass;
+        work[i].normal = share * normal;
+        work[i].friction = share * friction;
+        work[i].exchanged =
+            bodies[i].normalWork + bodies[i].frictionWork - work[i].normal - work[i].friction;
+    }
+    return work;
+}
+
 } // namespace tumble

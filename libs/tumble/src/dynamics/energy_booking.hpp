@@ -2,8 +2,12 @@
 // (docs/physics/08-energy-ledger.md, (8.1)-(8.3)).
 #pragma once
 
+#include "dynamics/contact_constraint.hpp"
 #include "dynamics/contact_solver.hpp"
 #include "tumble/body.hpp"
+
+#include <span>
+#include <vector>
 
 namespace tumble {
 
@@ -21,5 +25,11 @@ void bookContact(Body& body, const ContactWork& work, Real energyChange, bool im
 /// Books the energy a position correction changed since `energyBefore` and returns the body's
 /// energy after it.
 Real bookCorrection(Body& body, Real energyBefore, const Vec3& gravity);
+
+/// (8.4): the island's total work of the normal and of the friction impulses, shared among its
+/// bodies in proportion to their kinetic energy before the stage (their mass when all are at
+/// rest); what a body received beyond its share is exchanged, and the exchanges sum to zero.
+std::vector<ContactWork> shareIslandWork(std::span<const SolverBody> bodies,
+                                         std::span<const Real> kineticBefore);
 
 } // namespace tumble

@@ -35,35 +35,6 @@ constexpr Real kRestingConvergence = 1e-12;
 /// not change.
 constexpr Real kRestingVelocityShare = 1e-10;
 
-/// (8.4): the island's total work of the normal and of the friction impulses, shared among its
-/// bodies in proportion to their kinetic energy before the stage (their mass when all are at
-/// rest); what a body received beyond its share is exchanged, and the exchanges sum to zero.
-std::vector<ContactWork> shareIslandWork(std::span<const SolverBody> bodies,
-                                         std::span<const Real> kineticBefore)
-{
-    const std::size_t count = kineticBefore.size();
-    Real normal = 0.0;
-    Real friction = 0.0;
-    Real kinetic = 0.0;
-    Real mass = 0.0;
-    for (std::size_t i = 0; i < count; ++i) {
-        normal += bodies[i].normalWork;
-        friction += bodies[i].frictionWork;
-        kinetic += kineticBefore[i];
-        mass += 1.0 / bodies[i].invMass;
-    }
-    std::vector<ContactWork> work(count);
-    for (std::size_t i = 0; i < count; ++i) {
-        const Real share = kinetic > 0.0 ? kineticBefore[i] / kinetic
-                                         : (1.0 / bodies[i].invMass) / mass;
-        work[i].normal = share * normal;
-        work[i].friction = share * friction;
-        work[i].exchanged =
-            bodies[i].normalWork + bodies[i].frictionWork - work[i].normal - work[i].friction;
-    }
-    return work;
-}
-
 /// The vectors of an island's step. Each thread keeps one set from island to island and step to
 /// step: the constraints of Jolt's pyramid take 14 MB, which a fresh vector would have the
 /// system map and zero again every step.
@@ -336,16 +307,30 @@ void CoupledStep::finishSubstep(Real tau)
     }
     const std::vector<ContactWork> work = shareIslandWork(m_bodies, kineticBefore);
     m_constraintsOf.build(m_constraints, count);
-    for (std::size_t i = 0; i < count; ++i) {
+    // each body reads its own constraints and writes only itself
+    const auto advance = [&](std::size_t i) {
         Body& b = body(i);
         b.linearVelocity = m_bodies[i].linearVelocity;
         b.angularVelocity = m_bodies[i].angularVelocity;
         integrateIslandBody(b, m_velocityStart[i], m_constraints, m_constraintsOf.of(i), tau,
                             m_settings.integrator);
         const Real energyAfter = energyOf(b, m_settings.gravity);
-        bookContact(b, work[i],
-                    energyAfter - m_energies[i], false);
+        bookContact(b, work[i], energyAfter - m_energies[i], false);
         m_energies[i] = energyAfter;
+    };
+    if (m_constraints.size() >= kColouredSweepPoints && m_context.threads > 1) {
+        [[maybe_unused]] const int threads = m_context.threads;
+        const auto bodies = static_cast<std::ptrdiff_t>(count);
+#ifdef TUMBLE_HAVE_OPENMP
+#pragma omp parallel for schedule(static) num_threads(threads)
+#endif
+        for (std::ptrdiff_t i = 0; i < bodies; ++i) {
+            advance(static_cast<std::size_t>(i));
+        }
+    } else {
+        for (std::size_t i = 0; i < count; ++i) {
+            advance(i);
+        }
     }
     storeWarmStart(m_island, m_slots, m_contacts, m_constraints, tau);
     if (m_settings.recordContacts) {
