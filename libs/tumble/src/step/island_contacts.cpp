@@ -3,7 +3,6 @@
 
 #include "collision/collide_cuboid_cuboid.hpp"
 #include "collision/collide_cuboid_half_space.hpp"
-#include "collision/cuboid_separating_axis.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -95,16 +94,25 @@ Material mixMaterials(const Material& dynamic, const std::optional<Material>& ot
     return mixed;
 }
 
-bool mayTouch(const Body& a, const Body& b, const Vec3& gravity, Real horizon, Real tolerance)
+const CuboidPairGeometry& pairGeometry(std::span<BodySlot> slots, std::uint32_t slotA,
+                                       std::uint32_t slotB, Real margin)
 {
-    const Real margin = tolerance + reachOver(a, gravity, horizon) + reachOver(b, gravity, horizon);
-    return findContactAxis(cuboidFrame({a.position, a.orientation}, a.shape.halfExtents()),
-                           cuboidFrame({b.position, b.orientation}, b.shape.halfExtents()),
-                           margin)
-        .has_value();
+    const Body& a = slots[slotA].body;
+    const Body& b = slots[slotB].body;
+    BodySlot& owner = a.isStatic() ? slots[slotB] : slots[slotA];
+    return owner.pairGeometry.geometry(slotB, {a.position, a.orientation}, a.shape.halfExtents(),
+                                       {b.position, b.orientation}, b.shape.halfExtents(), margin);
 }
 
-void findIslandContacts(const CoupledIsland& island, std::span<const BodySlot> slots,
+bool mayTouch(std::span<BodySlot> slots, std::uint32_t slotA, std::uint32_t slotB,
+              const Vec3& gravity, Real horizon, Real tolerance)
+{
+    const Real margin = tolerance + reachOver(slots[slotA].body, gravity, horizon) +
+                        reachOver(slots[slotB].body, gravity, horizon);
+    return !(pairGeometry(slots, slotA, slotB, margin).largestSeparation > margin);
+}
+
+void findIslandContacts(const CoupledIsland& island, std::span<BodySlot> slots,
                         const StepContext& context, Real horizon,
                         std::vector<IslandContact>& contacts)
 {
@@ -117,9 +125,7 @@ void findIslandContacts(const CoupledIsland& island, std::span<const BodySlot> s
         const Real margin =
             tolerance + reachOver(a, gravity, horizon) + reachOver(b, gravity, horizon);
         IslandContact contact;
-        contact.manifold =
-            collideCuboids({a.position, a.orientation}, a.shape.halfExtents(),
-                           {b.position, b.orientation}, b.shape.halfExtents(), margin);
+        contact.manifold = manifoldWithin(pairGeometry(slots, slotA, slotB, margin), margin);
         if (contact.manifold.pointCount == 0) {
             continue;
         }
