@@ -84,12 +84,23 @@ PairManifold manifoldWithin(const CuboidPairGeometry& geometry, Real margin)
     }
     // the clipped points within the margin, in clipping order (9.7); the edge point's separation
     // is that of its axis, never above the largest
-    ClippedPoints within;
-    for (int i = 0; i < geometry.points.count; ++i) {
-        if (geometry.points.points[i].separation <= margin) {
-            within.points[within.count++] = geometry.points.points[i];
+    const auto isWithin = [&](const PairContactPoint& point) { return point.separation <= margin; };
+    const auto begin = geometry.points.points.begin();
+    const auto end = begin + geometry.points.count;
+    if (std::count_if(begin, end, isWithin) <= 4) {
+        // nothing to reduce (9.8)
+        PairManifold manifold;
+        manifold.normal = geometry.normal;
+        for (auto point = begin; point != end; ++point) {
+            if (isWithin(*point)) {
+                manifold.points[manifold.pointCount++] = *point;
+            }
         }
+        return manifold;
     }
+    ClippedPoints within;
+    within.count = static_cast<int>(std::copy_if(begin, end, within.points.begin(), isWithin) -
+                                    within.points.begin());
     return reduceContactPoints(within, geometry.normal);
 }
 

@@ -22,34 +22,45 @@ const CuboidPairGeometry& PairGeometryCache::geometry(std::uint32_t other, const
                                                       const Transform& poseB,
                                                       const Vec3& halfExtentsB, Real margin)
 {
-    auto entry = std::find_if(m_entries.begin(), m_entries.end(),
-                              [&](const Entry& e) { return e.other == other; });
-    if (entry == m_entries.end()) {
-        entry = m_entries.insert(m_entries.end(), Entry{});
-        entry->other = other;
-    } else if (entry->halfExtentsA == halfExtentsA && entry->halfExtentsB == halfExtentsB &&
-               withinPairCacheReach(poseA, entry->poseA) &&
-               withinPairCacheReach(poseB, entry->poseB) &&
-               decidesMargin(entry->geometry, margin)) {
-        entry->asked = true;
-        return entry->geometry;
+    const auto index =
+        static_cast<std::size_t>(std::find(m_others.begin(), m_others.end(), other) -
+                                 m_others.begin());
+    const bool known = index < m_others.size();
+    if (!known) {
+        m_others.push_back(other);
+        m_entries.emplace_back();
     }
-    entry->asked = true;
-    entry->poseA = poseA;
-    entry->poseB = poseB;
-    entry->halfExtentsA = halfExtentsA;
-    entry->halfExtentsB = halfExtentsB;
-    entry->geometry = findCuboidPairGeometry(cuboidFrame(poseA, halfExtentsA),
+    Entry& entry = m_entries[index];
+    entry.asked = true;
+    if (known && entry.halfExtentsA == halfExtentsA && entry.halfExtentsB == halfExtentsB &&
+        withinPairCacheReach(poseA, entry.poseA) && withinPairCacheReach(poseB, entry.poseB) &&
+        decidesMargin(entry.geometry, margin)) {
+        return entry.geometry;
+    }
+    entry.poseA = poseA;
+    entry.poseB = poseB;
+    entry.halfExtentsA = halfExtentsA;
+    entry.halfExtentsB = halfExtentsB;
+    entry.geometry = findCuboidPairGeometry(cuboidFrame(poseA, halfExtentsA),
                                              cuboidFrame(poseB, halfExtentsB), margin);
-    return entry->geometry;
+    return entry.geometry;
 }
 
 void PairGeometryCache::forgetUnasked()
 {
-    std::erase_if(m_entries, [](const Entry& e) { return !e.asked; });
-    for (Entry& e : m_entries) {
-        e.asked = false;
+    std::size_t kept = 0;
+    for (std::size_t e = 0; e < m_entries.size(); ++e) {
+        if (!m_entries[e].asked) {
+            continue;
+        }
+        if (kept != e) {
+            m_others[kept] = m_others[e];
+            m_entries[kept] = m_entries[e];
+        }
+        m_entries[kept++].asked = false;
     }
+    m_others.resize(kept);
+    m_entries.resize(kept);
 }
 
 } // namespace tumble

@@ -33,12 +33,15 @@ public:
     /// Drops the pairs not asked for since the last call.
     void forgetUnasked();
 
-    void clear() { m_entries.clear(); }
+    void clear()
+    {
+        m_others.clear();
+        m_entries.clear();
+    }
     [[nodiscard]] std::size_t size() const { return m_entries.size(); }
 
 private:
     struct Entry {
-        std::uint32_t other = 0;
         bool asked = false;
         Transform poseA{};
         Transform poseB{};
@@ -46,6 +49,8 @@ private:
         Vec3 halfExtentsB{0.0};
         CuboidPairGeometry geometry{};
     };
+    /// The other side of each entry, apart from the entries so that finding one reads little.
+    std::vector<std::uint32_t> m_others;
     std::vector<Entry> m_entries;
 };
 
