@@ -112,7 +112,9 @@ void loadWarmStart(const CoupledIsland& island, std::span<const BodySlot> slots,
 {
     // the points in contact of a contact new to the island get the carried weight (11.13); a
     // point new to a contact that goes on starts from nothing, as its neighbours carry the load
-    std::vector<std::uint8_t> guess(constraints.size(), 0);
+    // one vector per thread, kept from step to step
+    thread_local std::vector<std::uint8_t> guess;
+    guess.assign(constraints.size(), 0);
     bool anyGuess = false;
     const Real reach = kWarmStartReach * settings.contactTolerance;
     for (const IslandContact& contact : contacts) {
