@@ -76,7 +76,7 @@ void World::findPairs(detail::StepScratch& scratch, Real dt)
             scratch.links.push_back({a, b});
         }
     }
-    // (9.11): a pair the broad phase no longer reports has no use for its kept geometry
+    // (9.11): kept geometry nobody asked for since the last broad phase is of a pair gone
     for (BodySlot& slot : m_slots) {
         slot.pairGeometry.forgetUnasked();
     }
