@@ -488,5 +488,68 @@ TEST(CollideCuboidCuboid, RandomNearlyLevelStacksGetFaceContacts)
     EXPECT_GT(overTheFace, 500);
 }
 
+bool sameManifold(const PairManifold& a, const PairManifold& b)
+{
+    if (a.pointCount != b.pointCount || (a.pointCount > 0 && a.normal != b.normal)) {
+        return false;
+    }
+    for (int i = 0; i < a.pointCount; ++i) {
+        if (a.points[i].position != b.points[i].position ||
+            a.points[i].separation != b.points[i].separation || a.points[i].id != b.points[i].id) {
+            return false;
+        }
+    }
+    return true;
+}
+
+TEST(CollideCuboidCuboid, GeometryFoundAtOneMarginGivesTheManifoldOfEveryMarginItDecides)
+{
+    // (9.11): the margin only stops the axis search and picks points, so a geometry that decides
+    // a margin gives exactly collideCuboids' manifold at it.
+    std::mt19937_64 random(20261125);
+    std::uniform_real_distribution<Real> unit(0.0, 1.0);
+    int decided = 0;
+    int undecided = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+        SCOPED_TRACE(trial);
+        const Vec3 extentsA(0.2 + unit(random), 0.2 + unit(random), 0.2 + unit(random));
+        const Vec3 extentsB(0.2 + unit(random), 0.2 + unit(random), 0.2 + unit(random));
+        const Transform a{Vec3(0.0), randomRotation(random)};
+        const Real reach = glm::length(extentsA) + glm::length(extentsB);
+        const Transform b{reach * unit(random) * (randomRotation(random) * kUp),
+                          randomRotation(random)};
+        const Real searched = 0.1 * unit(random);
+        const CuboidPairGeometry geometry =
+            findCuboidPairGeometry(cuboidFrame(a, extentsA), cuboidFrame(b, extentsB), searched);
+        for (const Real margin : {0.0, 1e-3, 0.01, 0.05, 0.1, 0.5}) {
+            if (!decidesMargin(geometry, margin)) {
+                // only a search stopped at an axis beyond its margin leaves a larger one open
+                EXPECT_FALSE(geometry.complete);
+                EXPECT_LE(geometry.largestSeparation, margin);
+                ++undecided;
+                continue;
+            }
+            ++decided;
+            EXPECT_TRUE(sameManifold(manifoldWithin(geometry, margin),
+                                     collideCuboids(a, extentsA, b, extentsB, margin)))
+                << "margin " << margin;
+        }
+    }
+    EXPECT_GT(decided, 1000);
+    EXPECT_GT(undecided, 100);
+}
+
+TEST(CollideCuboidCuboid, GeometryKeepsPointsBeyondTheSearchMargin)
+{
+    // B's face is 0.01 above A's: no points within 5e-3, four within 0.02, from one geometry
+    const CuboidPairGeometry geometry =
+        findCuboidPairGeometry(cuboidFrame({Vec3(0.0), kIdentity}, Vec3(1.0)),
+                               cuboidFrame(cubeOnCube(kIdentity, 0.01), Vec3(1.0)), 0.02);
+    ASSERT_TRUE(geometry.complete);
+    EXPECT_NEAR(geometry.largestSeparation, 0.01, kCoordinates);
+    EXPECT_EQ(manifoldWithin(geometry, kMargin).pointCount, 0);
+    EXPECT_EQ(manifoldWithin(geometry, 0.02).pointCount, 4);
+}
+
 } // namespace
 } // namespace tumble

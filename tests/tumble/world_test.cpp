@@ -222,5 +222,35 @@ TEST(World, ABodyWhoseVertexCrossesThePlaneWithinTheStepIsNeverSteppedAsInFlight
     EXPECT_GT(crossingsWithRisingCentre, 100);
 }
 
+/// (9.11): the geometry a pair keeps never outlives a change the user makes. Two cubes of size 2
+/// stand settled on the ground; the upper one then shrinks to 1.9 or is lifted by 0.05 m, so its
+/// lower face is 0.05 m above the lower cube's top, and it must fall the 0.05 m (shrunk) or back
+/// to where it stood (lifted). Kept geometry would hold it where it was.
+TEST(World, AStackedCubeThatShrinksOrIsLiftedFallsOntoTheOneBelow)
+{
+    for (const bool shrink : {true, false}) {
+        SCOPED_TRACE(shrink ? "shrunk" : "lifted");
+        World world = testing::worldWithGround(WorldSettings{.allowSleep = false});
+        BodyDef def;
+        def.shape.size = Vec3(2.0);
+        def.position = Vec3(0.0, 1.0, 0.0);
+        world.createBody(def);
+        def.position = Vec3(0.0, 3.0, 0.0);
+        const BodyId upper = world.createBody(def);
+        testing::simulate(world, 1.0, 1.0 / 60.0);
+        const Body& body = world.body(upper);
+        const Real settled = body.position.y;
+        if (shrink) {
+            world.setSize(upper, Vec3(1.9));
+        } else {
+            world.setTransform(upper, body.position + Vec3(0.0, 0.05, 0.0), body.orientation);
+        }
+        // a fall of 0.05 m takes 0.1 s
+        testing::simulate(world, 0.5, 1.0 / 60.0);
+        EXPECT_NEAR(world.body(upper).position.y, shrink ? settled - 0.05 : settled, 1e-4);
+        EXPECT_LT(glm::length(world.body(upper).linearVelocity), 1e-6);
+    }
+}
+
 } // namespace
 } // namespace tumble

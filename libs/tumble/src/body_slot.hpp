@@ -2,6 +2,7 @@
 // state the step carries from one step to the next.
 #pragma once
 
+#include "collision/pair_geometry_cache.hpp"
 #include "tumble/body.hpp"
 #include "tumble/contact.hpp"
 
@@ -44,6 +45,9 @@ struct BodySlot {
     bool coupled = false;
     /// Last step's impulses of the contacts this body owns in the island solver.
     std::vector<CachedContactPoint> contactCache;
+    /// The box-box geometry of the pairs this body owns: with another body of higher slot, or
+    /// with a static body (9.11).
+    PairGeometryCache pairGeometry;
 };
 
 } // namespace tumble

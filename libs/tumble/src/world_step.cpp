@@ -72,9 +72,13 @@ void World::findPairs(detail::StepScratch& scratch, Real dt)
         const std::uint32_t b = scratch.proxies[pair.b].body;
         // narrow phase's first test: boxes that cannot touch within the step link nothing, and
         // a body near another but apart keeps the exact path (10.4)
-        if (mayTouch(m_slots[a].body, m_slots[b].body, m_settings.gravity, dt, margin)) {
+        if (mayTouch(m_slots, std::min(a, b), std::max(a, b), m_settings.gravity, dt, margin)) {
             scratch.links.push_back({a, b});
         }
+    }
+    // (9.11): kept geometry nobody asked for since the last broad phase is of a pair gone
+    for (BodySlot& slot : m_slots) {
+        slot.pairGeometry.forgetUnasked();
     }
 }
 

@@ -6,15 +6,14 @@
 #include "collision/cuboid_separating_axis.hpp"
 
 #include <algorithm>
+#include <limits>
 
 namespace tumble {
 namespace {
 
 /// (9.10): one point midway between the closest points of the two support edges.
-PairManifold edgeContact(const CuboidFrame& a, const CuboidFrame& b, const ContactAxis& axis)
+ClippedPoints edgeContact(const CuboidFrame& a, const CuboidFrame& b, const ContactAxis& axis)
 {
-    PairManifold manifold;
-    manifold.normal = axis.normal;
     // A's edge farthest along the normal, B's farthest against it.
     const CuboidEdge edgeA = supportEdge(a, axis.axisA, axis.normal);
     const CuboidEdge edgeB = supportEdge(b, axis.axisB, -axis.normal);
@@ -31,16 +30,17 @@ PairManifold edgeContact(const CuboidFrame& a, const CuboidFrame& b, const Conta
     const Real t = std::clamp(alongB + s * cosine, -edgeB.halfLength, edgeB.halfLength);
     const Vec3 pointA = edgeA.midpoint + s * edgeA.direction;
     const Vec3 pointB = edgeB.midpoint + t * edgeB.direction;
-    PairContactPoint& point = manifold.points[manifold.pointCount++];
+    ClippedPoints contact;
+    PairContactPoint& point = contact.points[contact.count++];
     point.position = 0.5 * (pointA + pointB);
     point.separation = axis.separation;
     point.id = edgeContactId(edgeA.index, edgeB.index);
-    return manifold;
+    return contact;
 }
 
-/// (9.6)-(9.8): the reference face is on A for a FaceA axis, on B for a FaceB axis.
-PairManifold faceContact(const CuboidFrame& a, const CuboidFrame& b, const ContactAxis& axis,
-                         Real margin)
+/// (9.6)-(9.7) at every separation: the reference face is on A for a FaceA axis, on B for a
+/// FaceB axis.
+ClippedPoints faceContact(const CuboidFrame& a, const CuboidFrame& b, const ContactAxis& axis)
 {
     const bool referenceIsB = axis.kind == AxisKind::FaceB;
     const CuboidFrame& reference = referenceIsB ? b : a;
@@ -50,26 +50,66 @@ PairManifold faceContact(const CuboidFrame& a, const CuboidFrame& b, const Conta
     const int referenceAxis = referenceIsB ? axis.axisB : axis.axisA;
     const bool negative = glm::dot(reference.axes[referenceAxis], outward) < 0.0;
     const int referenceFace = faceIndex(referenceAxis, negative);
-    const ClippedPoints clipped =
-        clipIncidentFace(reference, referenceFace, incident, referenceIsB, margin);
-    return reduceContactPoints(clipped, axis.normal);
+    return clipIncidentFace(reference, referenceFace, incident, referenceIsB,
+                            std::numeric_limits<Real>::infinity());
 }
 
 } // namespace
 
+CuboidPairGeometry findCuboidPairGeometry(const CuboidFrame& a, const CuboidFrame& b,
+                                          Real margin)
+{
+    const AxisSearch search = searchContactAxis(a, b, margin);
+    CuboidPairGeometry geometry;
+    geometry.largestSeparation = search.largestSeparation;
+    geometry.complete = search.axis.has_value();
+    if (!search.axis) {
+        return geometry;
+    }
+    geometry.normal = search.axis->normal;
+    geometry.points = search.axis->kind == AxisKind::EdgePair ? edgeContact(a, b, *search.axis)
+                                                               : faceContact(a, b, *search.axis);
+    return geometry;
+}
+
+bool decidesMargin(const CuboidPairGeometry& geometry, Real margin)
+{
+    return geometry.complete || geometry.largestSeparation > margin;
+}
+
+PairManifold manifoldWithin(const CuboidPairGeometry& geometry, Real margin)
+{
+    if (geometry.largestSeparation > margin) {
+        return PairManifold{};
+    }
+    // the clipped points within the margin, in clipping order (9.7); the edge point's separation
+    // is that of its axis, never above the largest
+    const auto isWithin = [&](const PairContactPoint& point) { return point.separation <= margin; };
+    const auto begin = geometry.points.points.begin();
+    const auto end = begin + geometry.points.count;
+    if (std::count_if(begin, end, isWithin) <= 4) {
+        // nothing to reduce (9.8)
+        PairManifold manifold;
+        manifold.normal = geometry.normal;
+        for (auto point = begin; point != end; ++point) {
+            if (isWithin(*point)) {
+                manifold.points[manifold.pointCount++] = *point;
+            }
+        }
+        return manifold;
+    }
+    ClippedPoints within;
+    within.count = static_cast<int>(std::copy_if(begin, end, within.points.begin(), isWithin) -
+                                    within.points.begin());
+    return reduceContactPoints(within, geometry.normal);
+}
+
 PairManifold collideCuboids(const Transform& poseA, const Vec3& halfExtentsA,
                             const Transform& poseB, const Vec3& halfExtentsB, Real margin)
 {
-    const CuboidFrame a = cuboidFrame(poseA, halfExtentsA);
-    const CuboidFrame b = cuboidFrame(poseB, halfExtentsB);
-    const std::optional<ContactAxis> axis = findContactAxis(a, b, margin);
-    if (!axis) {
-        return PairManifold{};
-    }
-    if (axis->kind == AxisKind::EdgePair) {
-        return edgeContact(a, b, *axis);
-    }
-    return faceContact(a, b, *axis, margin);
+    return manifoldWithin(findCuboidPairGeometry(cuboidFrame(poseA, halfExtentsA),
+                                                 cuboidFrame(poseB, halfExtentsB), margin),
+                          margin);
 }
 
 } // namespace tumble

@@ -1,6 +1,7 @@
 // Separating-axis test between two cuboids (docs/physics/09-box-box.md, (9.1)-(9.5)).
 #include "collision/cuboid_separating_axis.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -39,8 +40,7 @@ Real projectedRadius(const CuboidFrame& box, const Vec3& axis)
            box.halfExtents.z * std::abs(glm::dot(box.axes[2], axis));
 }
 
-std::optional<ContactAxis> findContactAxis(const CuboidFrame& a, const CuboidFrame& b,
-                                           Real margin)
+AxisSearch searchContactAxis(const CuboidFrame& a, const CuboidFrame& b, Real margin)
 {
     // faces[k] for A's axis k, faces[3 + k] for B's.
     std::array<ContactAxis, 6> faces{};
@@ -54,11 +54,12 @@ std::optional<ContactAxis> findContactAxis(const CuboidFrame& a, const CuboidFra
     int faceB = 3;
     for (int k = 0; k < 3; ++k) {
         if (faces[k].separation > margin || faces[3 + k].separation > margin) {
-            return std::nullopt;
+            return {std::nullopt, std::max(faces[k].separation, faces[3 + k].separation)};
         }
         faceA = faces[k].separation > faces[faceA].separation ? k : faceA;
         faceB = faces[3 + k].separation > faces[faceB].separation ? 3 + k : faceB;
     }
+    Real largest = std::max(faces[faceA].separation, faces[faceB].separation);
     std::optional<ContactAxis> edge;
     for (int i = 0; i < 3; ++i) {
         for (int j = 0; j < 3; ++j) {
@@ -71,8 +72,9 @@ std::optional<ContactAxis> findContactAxis(const CuboidFrame& a, const CuboidFra
             const ContactAxis axis =
                 separationAlong(a, b, cross / sine, AxisKind::EdgePair, i, j);
             if (axis.separation > margin) {
-                return std::nullopt;
+                return {std::nullopt, axis.separation};
             }
+            largest = std::max(largest, axis.separation);
             if (!edge || axis.separation > edge->separation) {
                 edge = axis;
             }
@@ -83,15 +85,21 @@ std::optional<ContactAxis> findContactAxis(const CuboidFrame& a, const CuboidFra
     const ContactAxis& face =
         clearlyBetter(faces[faceB], faces[faceA]) ? faces[faceB] : faces[faceA];
     if (!edge || !clearlyBetter(*edge, face)) {
-        return face;
+        return {face, largest};
     }
     // An edge axis nearly along a face normal gives way to that face, A's first.
     for (const ContactAxis& candidate : faces) {
         if (std::abs(glm::dot(candidate.normal, edge->normal)) >= kEdgeAxisFaceCosine) {
-            return candidate;
+            return {candidate, largest};
         }
     }
-    return edge;
+    return {edge, largest};
+}
+
+std::optional<ContactAxis> findContactAxis(const CuboidFrame& a, const CuboidFrame& b,
+                                           Real margin)
+{
+    return searchContactAxis(a, b, margin).axis;
 }
 
 } // namespace tumble

@@ -36,10 +36,23 @@ struct ContactAxis {
 /// Half the length of the box's projection on the unit axis (9.1).
 Real projectedRadius(const CuboidFrame& box, const Vec3& axis);
 
-/// Tests the 15 axes (9.2)-(9.3). Empty if some axis separates the boxes by more than `margin`;
-/// otherwise the axis of greatest separation (minus the penetration depth (9.4)), biased
-/// towards faces and towards A, with edge axes nearly along a face normal replaced by that face
-/// (9.5).
+/// What the search of the 15 axes found.
+struct AxisSearch {
+    /// The contact axis; empty if some axis separates the boxes by more than the margin.
+    std::optional<ContactAxis> axis;
+    /// Largest separation (9.2) of the axes tested, m. With an axis found it is that of all
+    /// tested axes, the value compared with the margin; without one, that of the first axis
+    /// beyond the margin, so a lower bound.
+    Real largestSeparation = 0.0;
+};
+
+/// Tests the 15 axes (9.2)-(9.3). No axis if some axis separates the boxes by more than
+/// `margin`; otherwise the axis of greatest separation (minus the penetration depth (9.4)),
+/// biased towards faces and towards A, with edge axes nearly along a face normal replaced by
+/// that face (9.5).
+AxisSearch searchContactAxis(const CuboidFrame& a, const CuboidFrame& b, Real margin);
+
+/// The axis of searchContactAxis alone.
 std::optional<ContactAxis> findContactAxis(const CuboidFrame& a, const CuboidFrame& b,
                                            Real margin);
 

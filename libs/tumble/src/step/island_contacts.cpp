@@ -3,7 +3,6 @@
 
 #include "collision/collide_cuboid_cuboid.hpp"
 #include "collision/collide_cuboid_half_space.hpp"
-#include "collision/cuboid_separating_axis.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -35,6 +34,20 @@ Real reachOver(const Body& body, const Vec3& gravity, Real horizon)
                       glm::length(gravity) * horizon);
 }
 
+/// reachOver of each of the island's bodies, then 0 for the static side; one vector per thread,
+/// kept from step to step.
+std::span<const Real> islandReach(const CoupledIsland& island, std::span<const BodySlot> slots,
+                                  const Vec3& gravity, Real horizon)
+{
+    thread_local std::vector<Real> reach;
+    reach.resize(island.bodies.size() + 1);
+    for (std::size_t local = 0; local < island.bodies.size(); ++local) {
+        reach[local] = reachOver(slots[island.bodies[local]].body, gravity, horizon);
+    }
+    reach.back() = 0.0;
+    return reach;
+}
+
 void setMaterial(IslandContact& contact, const Material& material)
 {
     contact.restitution = material.restitution;
@@ -43,7 +56,7 @@ void setMaterial(IslandContact& contact, const Material& material)
 }
 
 void addHalfSpaceContacts(const CoupledIsland& island, std::span<const BodySlot> slots,
-                          const StepContext& context, Real horizon,
+                          const StepContext& context, std::span<const Real> reach,
                           std::vector<IslandContact>& contacts)
 {
     const auto staticIndex = static_cast<std::uint32_t>(island.bodies.size());
@@ -51,7 +64,7 @@ void addHalfSpaceContacts(const CoupledIsland& island, std::span<const BodySlot>
     for (std::uint32_t local = 0; local < island.bodies.size(); ++local) {
         const Body& body = slots[island.bodies[local]].body;
         const Transform pose{body.position, body.orientation};
-        const Real margin = tolerance + reachOver(body, context.settings.gravity, horizon);
+        const Real margin = tolerance + reach[local];
         const auto addContact = [&](const Vec3& point, const Vec3& normal, std::uint32_t side,
                                     const std::optional<Material>& material) {
             IslandContact contact;
@@ -95,36 +108,46 @@ Material mixMaterials(const Material& dynamic, const std::optional<Material>& ot
     return mixed;
 }
 
-bool mayTouch(const Body& a, const Body& b, const Vec3& gravity, Real horizon, Real tolerance)
+const CuboidPairGeometry& pairGeometry(std::span<BodySlot> slots, std::uint32_t slotA,
+                                       std::uint32_t slotB, Real margin)
 {
-    const Real margin = tolerance + reachOver(a, gravity, horizon) + reachOver(b, gravity, horizon);
-    return findContactAxis(cuboidFrame({a.position, a.orientation}, a.shape.halfExtents()),
-                           cuboidFrame({b.position, b.orientation}, b.shape.halfExtents()),
-                           margin)
-        .has_value();
+    const Body& a = slots[slotA].body;
+    const Body& b = slots[slotB].body;
+    BodySlot& owner = a.isStatic() ? slots[slotB] : slots[slotA];
+    return owner.pairGeometry.geometry(slotB, {a.position, a.orientation}, a.shape.halfExtents(),
+                                       {b.position, b.orientation}, b.shape.halfExtents(), margin);
 }
 
-void findIslandContacts(const CoupledIsland& island, std::span<const BodySlot> slots,
+bool mayTouch(std::span<BodySlot> slots, std::uint32_t slotA, std::uint32_t slotB,
+              const Vec3& gravity, Real horizon, Real tolerance)
+{
+    const Real margin = tolerance + reachOver(slots[slotA].body, gravity, horizon) +
+                        reachOver(slots[slotB].body, gravity, horizon);
+    return !(pairGeometry(slots, slotA, slotB, margin).largestSeparation > margin);
+}
+
+void findIslandContacts(const CoupledIsland& island, std::span<BodySlot> slots,
                         const StepContext& context, Real horizon,
                         std::vector<IslandContact>& contacts)
 {
     contacts.clear();
     const Real tolerance = context.settings.contactTolerance;
-    const Vec3& gravity = context.settings.gravity;
+    const std::span<const Real> reach =
+        islandReach(island, slots, context.settings.gravity, horizon);
     for (const auto& [slotA, slotB] : island.pairs) {
         const Body& a = slots[slotA].body;
         const Body& b = slots[slotB].body;
-        const Real margin =
-            tolerance + reachOver(a, gravity, horizon) + reachOver(b, gravity, horizon);
-        IslandContact contact;
-        contact.manifold =
-            collideCuboids({a.position, a.orientation}, a.shape.halfExtents(),
-                           {b.position, b.orientation}, b.shape.halfExtents(), margin);
+        const std::uint32_t solverA = solverIndexOf(island, slotA);
+        const std::uint32_t solverB = solverIndexOf(island, slotB);
+        const Real margin = tolerance + reach[solverA] + reach[solverB];
+        IslandContact& contact = contacts.emplace_back();
+        contact.manifold = manifoldWithin(pairGeometry(slots, slotA, slotB, margin), margin);
         if (contact.manifold.pointCount == 0) {
+            contacts.pop_back();
             continue;
         }
-        contact.solverA = solverIndexOf(island, slotA);
-        contact.solverB = solverIndexOf(island, slotB);
+        contact.solverA = solverA;
+        contact.solverB = solverB;
         contact.sideA = slotA;
         contact.sideB = slotB;
         // the lower dynamic body keeps the warm start; a static side never does
@@ -138,9 +161,8 @@ void findIslandContacts(const CoupledIsland& island, std::span<const BodySlot> s
                                                                       : std::nullopt)
                            : mixMaterials(a.material, b.material);
         setMaterial(contact, material);
-        contacts.push_back(contact);
     }
-    addHalfSpaceContacts(island, slots, context, horizon, contacts);
+    addHalfSpaceContacts(island, slots, context, reach, contacts);
 }
 
 void buildConstraints(std::span<IslandContact> contacts, std::span<const BodySlot> slots,
@@ -160,7 +182,7 @@ void buildConstraints(std::span<IslandContact> contacts, std::span<const BodySlo
         contact.firstConstraint = static_cast<std::uint32_t>(constraints.size());
         for (int k = 0; k < contact.manifold.pointCount; ++k) {
             const PairContactPoint& point = contact.manifold.points[k];
-            ContactConstraint c;
+            ContactConstraint& c = constraints.emplace_back();
             c.bodyA = contact.solverA;
             c.bodyB = contact.solverB;
             c.contact = index;
@@ -172,7 +194,6 @@ void buildConstraints(std::span<IslandContact> contacts, std::span<const BodySlo
             c.kineticFriction = contact.friction;
             c.staticFriction = contact.staticFriction;
             c.restitution = contact.restitution;
-            constraints.push_back(c);
         }
     }
 }

@@ -40,12 +40,20 @@ Material mixMaterials(const Material& dynamic, const std::optional<Material>& ot
 /// Whether two bodies can come within the contact tolerance of each other over `horizon`
 /// seconds: no separating axis (9.2) parts them by more than the tolerance plus how far each can
 /// move (the speculative margin of findIslandContacts). A pair whose swept boxes overlap but that
-/// fails this has no contact point in the step, and joins no island (10.4).
-bool mayTouch(const Body& a, const Body& b, const Vec3& gravity, Real horizon, Real tolerance);
+/// fails this has no contact point in the step, and joins no island (10.4). `slotA < slotB`; the
+/// geometry found is kept for the narrow phase (9.11).
+bool mayTouch(std::span<BodySlot> slots, std::uint32_t slotA, std::uint32_t slotB,
+              const Vec3& gravity, Real horizon, Real tolerance);
+
+/// The box-box geometry of the pair (slotA < slotB) deciding `margin`, kept by its owner: the
+/// dynamic body of the two, the lower if both are (9.11).
+const CuboidPairGeometry& pairGeometry(std::span<BodySlot> slots, std::uint32_t slotA,
+                                       std::uint32_t slotB, Real margin);
 
 /// Contacts of the island's bodies at their current poses, every point within a speculative
 /// margin that covers how far the two sides can approach each other over `horizon` seconds.
-void findIslandContacts(const CoupledIsland& island, std::span<const BodySlot> slots,
+/// Writes the pair geometry of the island's bodies only.
+void findIslandContacts(const CoupledIsland& island, std::span<BodySlot> slots,
                         const StepContext& context, Real horizon,
                         std::vector<IslandContact>& contacts);
 

@@ -31,35 +31,53 @@ Vec3 inBodyFrame(const Body& owner, const Vec3& point)
     return glm::conjugate(owner.orientation) * (point - owner.position);
 }
 
-/// The unused entry of the owner's cache for the same pair and feature id, or cache.size().
-std::size_t matchById(const std::vector<CachedContactPoint>& cache, std::vector<bool>& used,
-                      std::uint32_t other, std::uint32_t id)
+/// The entries of the owner's cache for the pair keyed `other`, [first, last): storeWarmStart
+/// writes a contact's points one after another, and each pair is one contact.
+std::pair<std::size_t, std::size_t> pairEntries(const std::vector<CachedContactPoint>& cache,
+                                                std::uint32_t other)
 {
-    for (std::size_t e = 0; e < cache.size(); ++e) {
-        if (!used[e] && cache[e].other == other && cache[e].id == id) {
-            used[e] = true;
+    std::size_t first = 0;
+    while (first < cache.size() && cache[first].other != other) {
+        ++first;
+    }
+    std::size_t last = first;
+    while (last < cache.size() && cache[last].other == other) {
+        ++last;
+    }
+    return {first, last};
+}
+
+/// The unused entry in [first, last) with feature id `id`, or `last`; `used` has bit e - first
+/// set for entry e taken.
+std::size_t matchById(const std::vector<CachedContactPoint>& cache, std::size_t first,
+                      std::size_t last, std::uint32_t& used, std::uint32_t id)
+{
+    for (std::size_t e = first; e < last; ++e) {
+        const std::uint32_t bit = 1u << (e - first);
+        if ((used & bit) == 0 && cache[e].id == id) {
+            used |= bit;
             return e;
         }
     }
-    return cache.size();
+    return last;
 }
 
-/// The nearest unused entry of the same pair within `reach` of `local`, or cache.size(): the
-/// point whose features changed name without moving (a tie in the clipping) (11.6).
-std::size_t matchByPosition(const std::vector<CachedContactPoint>& cache, std::vector<bool>& used,
-                            std::uint32_t other, const Vec3& local, Real reach)
+/// The nearest unused entry in [first, last) within `reach` of `local`, or `last`: the point
+/// whose features changed name without moving (a tie in the clipping) (11.6).
+std::size_t matchByPosition(const std::vector<CachedContactPoint>& cache, std::size_t first,
+                            std::size_t last, std::uint32_t& used, const Vec3& local, Real reach)
 {
-    std::size_t best = cache.size();
+    std::size_t best = last;
     Real bestDistance = reach * reach;
-    for (std::size_t e = 0; e < cache.size(); ++e) {
+    for (std::size_t e = first; e < last; ++e) {
         const Real distance = lengthSquared(cache[e].localPosition - local);
-        if (!used[e] && cache[e].other == other && distance <= bestDistance) {
+        if ((used & (1u << (e - first))) == 0 && distance <= bestDistance) {
             best = e;
             bestDistance = distance;
         }
     }
-    if (best < cache.size()) {
-        used[best] = true;
+    if (best < last) {
+        used |= 1u << (best - first);
     }
     return best;
 }
@@ -94,34 +112,37 @@ void loadWarmStart(const CoupledIsland& island, std::span<const BodySlot> slots,
 {
     // the points in contact of a contact new to the island get the carried weight (11.13); a
     // point new to a contact that goes on starts from nothing, as its neighbours carry the load
-    std::vector<std::uint8_t> guess(constraints.size(), 0);
+    // one vector per thread, kept from step to step
+    thread_local std::vector<std::uint8_t> guess;
+    guess.assign(constraints.size(), 0);
     bool anyGuess = false;
-    std::vector<bool> used;
     const Real reach = kWarmStartReach * settings.contactTolerance;
     for (const IslandContact& contact : contacts) {
         const BodySlot& owner = slots[island.bodies[contact.owner]];
         const std::vector<CachedContactPoint>& cache = owner.contactCache;
-        used.assign(cache.size(), false);
+        // a pair keeps at most 4 points (storeWarmStart), so a bit each marks those taken
+        const auto [first, last] = pairEntries(cache, contact.ownerKey);
+        std::uint32_t used = 0;
         // the same features first, so a point found by position never takes another's entry
         std::array<std::size_t, 4> match{};
         for (int k = 0; k < contact.manifold.pointCount; ++k) {
-            match[k] = matchById(cache, used, contact.ownerKey, contact.manifold.points[k].id);
+            match[k] = matchById(cache, first, last, used, contact.manifold.points[k].id);
         }
         bool goesOn = false;
         for (int k = 0; k < contact.manifold.pointCount; ++k) {
-            if (match[k] == cache.size()) {
-                match[k] = matchByPosition(cache, used, contact.ownerKey,
-                                           inBodyFrame(owner.body, contact.manifold.points[k].position),
-                                           reach);
+            if (match[k] == last && first < last) {
+                match[k] = matchByPosition(
+                    cache, first, last, used,
+                    inBodyFrame(owner.body, contact.manifold.points[k].position), reach);
             }
-            goesOn = goesOn || match[k] < cache.size();
+            goesOn = goesOn || match[k] < last;
         }
         for (int k = 0; k < contact.manifold.pointCount; ++k) {
             ContactConstraint& c = constraints[contact.firstConstraint + k];
             c.normalImpulse = 0.0;
             c.tangentImpulse1 = 0.0;
             c.tangentImpulse2 = 0.0;
-            if (match[k] < cache.size()) {
+            if (match[k] < last) {
                 startFrom(c, cache[match[k]], tau);
             } else if (!goesOn && c.separation <= settings.contactTolerance) {
                 guess[contact.firstConstraint + static_cast<std::uint32_t>(k)] = 1;
@@ -219,12 +240,8 @@ void pushOutOfPenetration(const CoupledIsland& island, std::span<BodySlot> slots
                           const WorldSettings& settings)
 {
     const std::size_t count = island.bodies.size();
-    std::vector<SolverBody> pseudo(count + 1);
-    for (std::size_t i = 0; i < count; ++i) {
-        const Body& body = slots[island.bodies[i]].body;
-        pseudo[i].invMass = body.invMass;
-        pseudo[i].invInertiaWorld = body.invInertiaWorld;
-    }
+    // the points that will be deeper than the tolerance at the end of the sub-step (none in a
+    // settled pile, which then costs one pass over its constraints)
     std::vector<ContactConstraint> deep;
     for (const ContactConstraint& c : constraints) {
         const Body* bodyA = c.bodyA < count ? &slots[island.bodies[c.bodyA]].body : nullptr;
@@ -242,11 +259,22 @@ void pushOutOfPenetration(const CoupledIsland& island, std::span<BodySlot> slots
         push.tangentImpulse2 = 0.0;
         push.kineticFriction = 0.0;
         push.staticFriction = 0.0;
-        prepareConstraint(push, pseudo, {ConstraintTarget::Substep, tau, 0.0, 0.0});
         push.targetNormalVelocity = kPushOutFraction * excess / tau;
     }
     if (deep.empty()) {
         return;
+    }
+    std::vector<SolverBody> pseudo(count + 1);
+    for (std::size_t i = 0; i < count; ++i) {
+        const Body& body = slots[island.bodies[i]].body;
+        pseudo[i].invMass = body.invMass;
+        pseudo[i].invInertiaWorld = body.invInertiaWorld;
+    }
+    for (ContactConstraint& push : deep) {
+        // the push-out's target (11.10) replaces the one prepareConstraint sets
+        const Real target = push.targetNormalVelocity;
+        prepareConstraint(push, pseudo, {ConstraintTarget::Substep, tau, 0.0, 0.0});
+        push.targetNormalVelocity = target;
     }
     solveConstraints(deep, pseudo, kPushOutSweeps, kPushOutConvergence);
     for (std::size_t i = 0; i < count; ++i) {

@@ -1,0 +1,66 @@
+// The box-box narrow phase's memory of a body's pairs (docs/physics/09-box-box.md, (9.11)).
+#include "collision/pair_geometry_cache.hpp"
+
+#include <algorithm>
+
+namespace tumble {
+
+bool withinPairCacheReach(const Transform& pose, const Transform& kept)
+{
+    // |q - q0| = 2 sin(theta / 4) for unit quaternions of one sign, about half the angle theta
+    // between the orientations
+    const Real halfAngle = 0.5 * kPairCacheAngle;
+    const Quat turn = pose.orientation - kept.orientation;
+    return lengthSquared(pose.position - kept.position) <=
+               kPairCacheDistance * kPairCacheDistance &&
+           turn.w * turn.w + turn.x * turn.x + turn.y * turn.y + turn.z * turn.z <=
+               halfAngle * halfAngle;
+}
+
+const CuboidPairGeometry& PairGeometryCache::geometry(std::uint32_t other, const Transform& poseA,
+                                                      const Vec3& halfExtentsA,
+                                                      const Transform& poseB,
+                                                      const Vec3& halfExtentsB, Real margin)
+{
+    const auto index =
+        static_cast<std::size_t>(std::find(m_others.begin(), m_others.end(), other) -
+                                 m_others.begin());
+    const bool known = index < m_others.size();
+    if (!known) {
+        m_others.push_back(other);
+        m_entries.emplace_back();
+    }
+    Entry& entry = m_entries[index];
+    entry.asked = true;
+    if (known && entry.halfExtentsA == halfExtentsA && entry.halfExtentsB == halfExtentsB &&
+        withinPairCacheReach(poseA, entry.poseA) && withinPairCacheReach(poseB, entry.poseB) &&
+        decidesMargin(entry.geometry, margin)) {
+        return entry.geometry;
+    }
+    entry.poseA = poseA;
+    entry.poseB = poseB;
+    entry.halfExtentsA = halfExtentsA;
+    entry.halfExtentsB = halfExtentsB;
+    entry.geometry = findCuboidPairGeometry(cuboidFrame(poseA, halfExtentsA),
+                                             cuboidFrame(poseB, halfExtentsB), margin);
+    return entry.geometry;
+}
+
+void PairGeometryCache::forgetUnasked()
+{
+    std::size_t kept = 0;
+    for (std::size_t e = 0; e < m_entries.size(); ++e) {
+        if (!m_entries[e].asked) {
+            continue;
+        }
+        if (kept != e) {
+            m_others[kept] = m_others[e];
+            m_entries[kept] = m_entries[e];
+        }
+        m_entries[kept++].asked = false;
+    }
+    m_others.resize(kept);
+    m_entries.resize(kept);
+}
+
+} // namespace tumble

@@ -1,0 +1,57 @@
+// The box-box narrow phase's memory of a body's pairs: the geometry found at two poses, used
+// again while neither body has moved by more than a tiny bound (docs/physics/09-box-box.md,
+// (9.11)).
+#pragma once
+
+#include "collision/collide_cuboid_cuboid.hpp"
+#include "tumble/math.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace tumble {
+
+/// (9.11): a pair's kept geometry stands while each body is within this distance (m) and this
+/// rotation angle (rad) of the pose it was found at. Points of a unit box then lie within about
+/// 4e-9 m of where a fresh search would put them, 1e-5 of the default contact tolerance.
+inline constexpr Real kPairCacheDistance = 1e-9;
+inline constexpr Real kPairCacheAngle = 1e-9;
+
+/// Whether `pose` is within (9.11) of `kept`. Quaternions of opposite sign count as apart.
+bool withinPairCacheReach(const Transform& pose, const Transform& kept);
+
+/// The geometry of the pairs one body keeps, each under the other side's slot index.
+class PairGeometryCache {
+public:
+    /// The geometry of cuboid A (the lower slot) with cuboid B, deciding `margin` (m): the kept one
+    /// if both poses are within (9.11) of those it was found at and the sizes are the same, else
+    /// found now and kept.
+    const CuboidPairGeometry& geometry(std::uint32_t other, const Transform& poseA,
+                                       const Vec3& halfExtentsA, const Transform& poseB,
+                                       const Vec3& halfExtentsB, Real margin);
+
+    /// Drops the pairs not asked for since the last call.
+    void forgetUnasked();
+
+    void clear()
+    {
+        m_others.clear();
+        m_entries.clear();
+    }
+    [[nodiscard]] std::size_t size() const { return m_entries.size(); }
+
+private:
+    struct Entry {
+        bool asked = false;
+        Transform poseA{};
+        Transform poseB{};
+        Vec3 halfExtentsA{0.0};
+        Vec3 halfExtentsB{0.0};
+        CuboidPairGeometry geometry{};
+    };
+    /// The other side of each entry, apart from the entries so that finding one reads little.
+    std::vector<std::uint32_t> m_others;
+    std::vector<Entry> m_entries;
+};
+
+} // namespace tumble
