@@ -20,6 +20,10 @@ namespace tumble {
 
 namespace {
 
+/// (11.5c): an island of at least this many linked pairs (some kColouredSweepPoints points, at
+/// four a face contact) is large: it takes all the threads inside its step.
+constexpr std::size_t kLargeIslandPairs = 256;
+
 /// A bound on the angular speed over a torque-free step: |w| <= |L| / I_min <= |w0| I_max / I_min
 /// (the swept box of (10.3) needs one for the whole step).
 Vec3 angularSpeedBound(const Body& body)
@@ -143,33 +147,46 @@ void World::buildStepIslands(detail::StepScratch& scratch, Real dt)
 
 void World::advanceCoupledIslands(detail::StepScratch& scratch, Real dt)
 {
-    const auto count = static_cast<std::ptrdiff_t>(scratch.islands.size());
     if (scratch.islandEvents.size() < scratch.islands.size()) {
         scratch.islandEvents.resize(scratch.islands.size());
     }
     const StepContext context = stepContext();
-    const auto advance = [&](std::ptrdiff_t k) {
-        const CoupledIsland& island = scratch.islands[static_cast<std::size_t>(k)];
-        StepEvents& events = scratch.islandEvents[static_cast<std::size_t>(k)];
+    const auto advance = [&](std::size_t k, const StepContext& used) {
+        const CoupledIsland& island = scratch.islands[k];
+        StepEvents& events = scratch.islandEvents[k];
         events.clear();
         for (const std::uint32_t body : island.bodies) {
             m_slots[body].body.ledger.impactWorkLastStep = 0.0;
         }
-        advanceCoupled(island, m_slots, context, dt, events);
-        updateIslandRest(island.bodies, m_slots, context, dt, events);
+        advanceCoupled(island, m_slots, used, dt, events);
+        updateIslandRest(island.bodies, m_slots, used, dt, events);
     };
-    // each island writes only its own bodies, so islands run on any thread in any order
-    if (count > 1 && threadCount() > 1) {
-        [[maybe_unused]] const int threads = threadCount();
+    // (11.5c): a large island takes all the threads inside its step, one island after the
+    // other; the small ones share the threads between them, each on one. An island writes only
+    // its own bodies and its result does not depend on the threads it gets, so neither the
+    // split nor the order changes anything.
+    scratch.smallIslands.clear();
+    for (std::uint32_t k = 0; k < scratch.islands.size(); ++k) {
+        if (scratch.islands[k].pairs.size() >= kLargeIslandPairs && context.threads > 1) {
+            advance(k, context);
+        } else {
+            scratch.smallIslands.push_back(k);
+        }
+    }
+    StepContext alone = context;
+    alone.threads = 1;
+    const auto count = static_cast<std::ptrdiff_t>(scratch.smallIslands.size());
+    if (count > 1 && context.threads > 1) {
+        [[maybe_unused]] const int threads = context.threads;
 #ifdef TUMBLE_HAVE_OPENMP
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
 #endif
         for (std::ptrdiff_t k = 0; k < count; ++k) {
-            advance(k);
+            advance(scratch.smallIslands[static_cast<std::size_t>(k)], alone);
         }
     } else {
         for (std::ptrdiff_t k = 0; k < count; ++k) {
-            advance(k);
+            advance(scratch.smallIslands[static_cast<std::size_t>(k)], context);
         }
     }
 }

@@ -22,6 +22,10 @@ namespace {
 /// result is the same either way.
 constexpr std::size_t kRunsPerThread = 32;
 
+/// (11.5c): a solve's first sweeps stay on one thread; a settled island's solve ends within
+/// them, and a colour's barrier would cost more than it shares. Same order, same result.
+constexpr int kSweepsOnOneThread = 2;
+
 /// The largest impulse change, impulse and velocity correction of a sweep (11.5a).
 struct SweepMaxima {
     Real change = 0.0;
@@ -163,7 +167,8 @@ int solveConstraints(std::span<ContactConstraint> constraints, std::span<SolverB
     for (int sweep = 1; sweep <= iterations; ++sweep) {
         SweepMaxima maxima;
         if (coloured) {
-            maxima = colouredPass(schedule, constraints, bodies, threads, solvePoint);
+            maxima = colouredPass(schedule, constraints, bodies,
+                                  sweep > kSweepsOnOneThread ? threads : 1, solvePoint);
         } else {
             for (ContactConstraint& c : constraints) {
                 solvePoint(c, bodies[c.bodyA], bodies[c.bodyB], maxima);
@@ -177,8 +182,7 @@ int solveConstraints(std::span<ContactConstraint> constraints, std::span<SolverB
     return iterations;
 }
 
-void warmStart(std::span<const ContactConstraint> constraints, std::span<SolverBody> bodies,
-               int threads)
+void warmStart(std::span<const ContactConstraint> constraints, std::span<SolverBody> bodies)
 {
     if (constraints.size() < kColouredSweepPoints) {
         for (const ContactConstraint& c : constraints) {
@@ -186,8 +190,9 @@ void warmStart(std::span<const ContactConstraint> constraints, std::span<SolverB
         }
         return;
     }
-    // in the order of the sweeps, whatever the number of threads (11.5c)
-    colouredPass(colourRuns(constraints, bodies), constraints, bodies, threads,
+    // in the order of the sweeps (11.5c), on one thread: a pass is too short to pay for a
+    // barrier per colour
+    colouredPass(colourRuns(constraints, bodies), constraints, bodies, 1,
                  [](const ContactConstraint& c, SolverBody& a, SolverBody& b, SweepMaxima&) {
                      warmStartPoint(c, a, b);
                  });

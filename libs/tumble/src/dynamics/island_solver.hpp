@@ -48,9 +48,8 @@ void prepareConstraints(std::span<ContactConstraint> constraints,
 bool applyRestitution(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies);
 
 /// Applies the constraints' impulses to their bodies (warm starting, (11.6)).
-/// Like solveConstraints, a large set of points is visited colour by colour over `threads`.
-void warmStart(std::span<const ContactConstraint> constraints, std::span<SolverBody> bodies,
-               int threads = 1);
+/// Like solveConstraints, a large set of points is visited colour by colour.
+void warmStart(std::span<const ContactConstraint> constraints, std::span<SolverBody> bodies);
 
 /// Gauss-Seidel sweeps of normal (11.4) then friction (11.5) impulses with accumulated clamping,
 /// until no impulse changes by more than `convergence` times the largest, or no point's velocity

@@ -262,7 +262,7 @@ void CoupledStep::solveSubstep(Real tau)
     prepareConstraints(m_constraints, m_bodies, targets, m_context.threads);
     keepExactArrivals(m_constraints, m_gapMotions, tau, m_settings.contactTolerance);
     loadWarmStart(m_island, m_slots, m_contacts, m_constraints, tau, m_settings);
-    warmStart(m_constraints, m_bodies, m_context.threads);
+    warmStart(m_constraints, m_bodies);
     countSolve(solveConstraints(m_constraints, m_bodies, m_settings.solverIterations,
                                 kRestingConvergence, restingVelocityTolerance(tau),
                                 m_context.threads));
@@ -290,7 +290,7 @@ Real CoupledStep::earliestArrival(Real tau)
             inContact.push_back(c);
         }
     }
-    warmStart(inContact, free, m_context.threads);
+    warmStart(inContact, free);
     solveConstraints(inContact, free, m_settings.solverIterations, kRestingConvergence,
                      restingVelocityTolerance(tau), m_context.threads);
     gapMotions(m_constraints, free, m_velocityStart, m_angularVelocityStart, tau, m_gapMotions);

@@ -23,6 +23,8 @@ struct StepScratch {
     std::vector<std::uint8_t> dynamic;
     std::vector<CoupledIsland> islands;
     std::vector<StepEvents> islandEvents;
+    /// Indices of the islands small enough to share the threads between them (11.5c).
+    std::vector<std::uint32_t> smallIslands;
 };
 
 } // namespace tumble::detail
