@@ -186,7 +186,7 @@ void World::advanceCoupledIslands(detail::StepScratch& scratch, Real dt)
         }
     } else {
         for (std::ptrdiff_t k = 0; k < count; ++k) {
-            advance(scratch.smallIslands[static_cast<std::size_t>(k)], context);
+            advance(scratch.smallIslands[static_cast<std::size_t>(k)], alone);
         }
     }
 }

@@ -5,6 +5,7 @@
 #include "dynamics/friction_cone.hpp"
 #include "dynamics/island_solver.hpp"
 #include "dynamics/point_impulses.hpp"
+#include "parallel_for.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -21,10 +22,6 @@ namespace {
 /// colour on average: a colour ends at a barrier, which smaller shares would not pay for. The
 /// result is the same either way.
 constexpr std::size_t kRunsPerThread = 32;
-
-/// (11.5c): a solve's first sweeps stay on one thread; a settled island's solve ends within
-/// them, and a colour's barrier would cost more than it shares. Same order, same result.
-constexpr int kSweepsOnOneThread = 2;
 
 /// The largest impulse change, impulse and velocity correction of a sweep (11.5a).
 struct SweepMaxima {
@@ -167,8 +164,7 @@ int solveConstraints(std::span<ContactConstraint> constraints, std::span<SolverB
     for (int sweep = 1; sweep <= iterations; ++sweep) {
         SweepMaxima maxima;
         if (coloured) {
-            maxima = colouredPass(schedule, constraints, bodies,
-                                  sweep > kSweepsOnOneThread ? threads : 1, solvePoint);
+            maxima = colouredPass(schedule, constraints, bodies, threads, solvePoint);
         } else {
             for (ContactConstraint& c : constraints) {
                 solvePoint(c, bodies[c.bodyA], bodies[c.bodyB], maxima);
@@ -182,7 +178,8 @@ int solveConstraints(std::span<ContactConstraint> constraints, std::span<SolverB
     return iterations;
 }
 
-void warmStart(std::span<const ContactConstraint> constraints, std::span<SolverBody> bodies)
+void warmStart(std::span<const ContactConstraint> constraints, std::span<SolverBody> bodies,
+               int threads)
 {
     if (constraints.size() < kColouredSweepPoints) {
         for (const ContactConstraint& c : constraints) {
@@ -190,9 +187,8 @@ void warmStart(std::span<const ContactConstraint> constraints, std::span<SolverB
         }
         return;
     }
-    // in the order of the sweeps (11.5c), on one thread: a pass is too short to pay for a
-    // barrier per colour
-    colouredPass(colourRuns(constraints, bodies), constraints, bodies, 1,
+    // in the order of the sweeps (11.5c), each colour over the threads
+    colouredPass(colourRuns(constraints, bodies), constraints, bodies, threads,
                  [](const ContactConstraint& c, SolverBody& a, SolverBody& b, SweepMaxima&) {
                      warmStartPoint(c, a, b);
                  });
@@ -200,22 +196,11 @@ void warmStart(std::span<const ContactConstraint> constraints, std::span<SolverB
 
 void prepareConstraints(std::span<ContactConstraint> constraints,
                         std::span<const SolverBody> bodies,
-                        const ConstraintTargetSettings& settings, [[maybe_unused]] int threads)
+                        const ConstraintTargetSettings& settings, int threads)
 {
-    const auto count = static_cast<std::ptrdiff_t>(constraints.size());
     // each constraint reads the bodies and writes only itself
-    if (constraints.size() >= kColouredSweepPoints && threads > 1) {
-#ifdef TUMBLE_HAVE_OPENMP
-#pragma omp parallel for schedule(static) num_threads(threads)
-#endif
-        for (std::ptrdiff_t i = 0; i < count; ++i) {
-            prepareConstraint(constraints[static_cast<std::size_t>(i)], bodies, settings);
-        }
-        return;
-    }
-    for (ContactConstraint& c : constraints) {
-        prepareConstraint(c, bodies, settings);
-    }
+    parallelFor(constraints.size(), constraints.size() >= kColouredSweepPoints ? threads : 1,
+                [&](std::size_t i) { prepareConstraint(constraints[i], bodies, settings); });
 }
 
 } // namespace tumble

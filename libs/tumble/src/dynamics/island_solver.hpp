@@ -48,8 +48,10 @@ void prepareConstraints(std::span<ContactConstraint> constraints,
 bool applyRestitution(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies);
 
 /// Applies the constraints' impulses to their bodies (warm starting, (11.6)).
-/// Like solveConstraints, a large set of points is visited colour by colour.
-void warmStart(std::span<const ContactConstraint> constraints, std::span<SolverBody> bodies);
+/// Like solveConstraints, a large set of points is visited colour by colour, each colour over
+/// `threads` threads, with the same result for any number of them.
+void warmStart(std::span<const ContactConstraint> constraints, std::span<SolverBody> bodies,
+               int threads = 1);
 
 /// Gauss-Seidel sweeps of normal (11.4) then friction (11.5) impulses with accumulated clamping,
 /// until no impulse changes by more than `convergence` times the largest, or no point's velocity

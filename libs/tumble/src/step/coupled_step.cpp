@@ -5,6 +5,7 @@
 #include "dynamics/energy_booking.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/island_solver.hpp"
+#include "parallel_for.hpp"
 #include "step/arrivals.hpp"
 #include "step/contact_colour_order.hpp"
 #include "step/island_contacts.hpp"
@@ -133,7 +134,7 @@ void CoupledStep::run(Real dt)
         // narrow phase: every point within reach of the rest of the step
         findIslandContacts(m_island, m_slots, m_context, remaining, m_contacts);
         orderContactsByColour(m_contacts, count + 1, m_spareContacts);
-        buildConstraints(m_contacts, m_slots, m_island, m_constraints);
+        buildConstraints(m_contacts, m_slots, m_island, m_constraints, m_context.threads);
         m_gapMotions.clear();
         ++m_events.statistics.substeps;
         if (substep == 0) {
@@ -261,8 +262,8 @@ void CoupledStep::solveSubstep(Real tau)
                                            m_settings.restitutionThreshold};
     prepareConstraints(m_constraints, m_bodies, targets, m_context.threads);
     keepExactArrivals(m_constraints, m_gapMotions, tau, m_settings.contactTolerance);
-    loadWarmStart(m_island, m_slots, m_contacts, m_constraints, tau, m_settings);
-    warmStart(m_constraints, m_bodies);
+    loadWarmStart(m_island, m_slots, m_contacts, m_constraints, tau, m_settings, m_context.threads);
+    warmStart(m_constraints, m_bodies, m_context.threads);
     countSolve(solveConstraints(m_constraints, m_bodies, m_settings.solverIterations,
                                 kRestingConvergence, restingVelocityTolerance(tau),
                                 m_context.threads));
@@ -318,21 +319,8 @@ void CoupledStep::finishSubstep(Real tau)
         bookContact(b, work[i], energyAfter - m_energies[i], false);
         m_energies[i] = energyAfter;
     };
-    if (m_constraints.size() >= kColouredSweepPoints && m_context.threads > 1) {
-        [[maybe_unused]] const int threads = m_context.threads;
-        const auto bodies = static_cast<std::ptrdiff_t>(count);
-#ifdef TUMBLE_HAVE_OPENMP
-#pragma omp parallel for schedule(static) num_threads(threads)
-#endif
-        for (std::ptrdiff_t i = 0; i < bodies; ++i) {
-            advance(static_cast<std::size_t>(i));
-        }
-    } else {
-        for (std::size_t i = 0; i < count; ++i) {
-            advance(i);
-        }
-    }
-    storeWarmStart(m_island, m_slots, m_contacts, m_constraints, tau);
+    parallelFor(count, m_context.threads, advance);
+    storeWarmStart(m_island, m_slots, m_contacts, m_constraints, tau, m_context.threads);
     if (m_settings.recordContacts) {
         recordIslandContacts(ContactPhase::Resting, m_island, m_slots, m_contacts, m_constraints,
                              m_bodies, kineticBefore, m_settings.contactTolerance,

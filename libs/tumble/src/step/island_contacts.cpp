@@ -3,6 +3,8 @@
 
 #include "collision/collide_cuboid_cuboid.hpp"
 #include "collision/collide_cuboid_half_space.hpp"
+#include "parallel_for.hpp"
+#include "step/owner_groups.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -126,6 +128,82 @@ bool mayTouch(std::span<BodySlot> slots, std::uint32_t slotA, std::uint32_t slot
     return !(pairGeometry(slots, slotA, slotB, margin).largestSeparation > margin);
 }
 
+namespace {
+
+/// The contact of one of the island's pairs of bodies, if any point is within the margin.
+bool findPairContact(const CoupledIsland& island, std::span<BodySlot> slots, Real tolerance,
+                     std::span<const Real> reach, const std::pair<std::uint32_t, std::uint32_t>& pair,
+                     IslandContact& contact)
+{
+    const auto [slotA, slotB] = pair;
+    const Body& a = slots[slotA].body;
+    const Body& b = slots[slotB].body;
+    const std::uint32_t solverA = solverIndexOf(island, slotA);
+    const std::uint32_t solverB = solverIndexOf(island, slotB);
+    const Real margin = tolerance + reach[solverA] + reach[solverB];
+    contact.manifold = manifoldWithin(pairGeometry(slots, slotA, slotB, margin), margin);
+    if (contact.manifold.pointCount == 0) {
+        return false;
+    }
+    contact.solverA = solverA;
+    contact.solverB = solverB;
+    contact.sideA = slotA;
+    contact.sideB = slotB;
+    // the lower dynamic body keeps the warm start; a static side never does
+    const bool aKeeps = !a.isStatic();
+    contact.owner = aKeeps ? contact.solverA : contact.solverB;
+    contact.ownerKey = aKeeps ? slotB : slotA;
+    const Material material =
+        a.isStatic()   ? mixMaterials(b.material, a.materialGiven ? std::optional(a.material)
+                                                                  : std::nullopt)
+        : b.isStatic() ? mixMaterials(a.material, b.materialGiven ? std::optional(b.material)
+                                                                  : std::nullopt)
+                       : mixMaterials(a.material, b.material);
+    setMaterial(contact, material);
+    return true;
+}
+
+/// findPairContact for each pair over `threads` threads: each body's pairs go to one thread,
+/// since a pair writes the geometry its dynamic body keeps (9.11); the contacts then follow
+/// in the order of the pairs, as from one thread (11.5c).
+void findPairContactsOverThreads(const CoupledIsland& island, std::span<BodySlot> slots,
+                                 Real tolerance, std::span<const Real> reach, int threads,
+                                 std::vector<IslandContact>& contacts)
+{
+    // kept from step to step by the calling thread; the lambda below names them through these
+    // references, since a thread_local named there would be each worker's own
+    thread_local std::vector<IslandContact> keptOfPair;
+    thread_local std::vector<std::uint32_t> keptOwnerOf;
+    thread_local OwnerGroups keptGroups;
+    thread_local std::vector<std::uint8_t> keptFound;
+    std::vector<IslandContact>& ofPair = keptOfPair;
+    std::vector<std::uint8_t>& found = keptFound;
+    std::vector<std::uint32_t>& ownerOf = keptOwnerOf;
+    OwnerGroups& groups = keptGroups;
+    const std::size_t pairs = island.pairs.size();
+    ofPair.resize(pairs);
+    ownerOf.resize(pairs);
+    for (std::size_t k = 0; k < pairs; ++k) {
+        const auto [slotA, slotB] = island.pairs[k];
+        ownerOf[k] = solverIndexOf(island, slots[slotA].body.isStatic() ? slotB : slotA);
+    }
+    groups.build(ownerOf, island.bodies.size());
+    found.assign(pairs, 0);
+    parallelFor(groups.count(), threads, [&](std::size_t g) {
+        for (const std::uint32_t k : groups.group(g)) {
+            found[k] = findPairContact(island, slots, tolerance, reach, island.pairs[k],
+                                       ofPair[k]) ? 1 : 0;
+        }
+    });
+    for (std::size_t k = 0; k < pairs; ++k) {
+        if (found[k] != 0) {
+            contacts.push_back(ofPair[k]);
+        }
+    }
+}
+
+} // namespace
+
 void findIslandContacts(const CoupledIsland& island, std::span<BodySlot> slots,
                         const StepContext& context, Real horizon,
                         std::vector<IslandContact>& contacts)
@@ -134,41 +212,23 @@ void findIslandContacts(const CoupledIsland& island, std::span<BodySlot> slots,
     const Real tolerance = context.settings.contactTolerance;
     const std::span<const Real> reach =
         islandReach(island, slots, context.settings.gravity, horizon);
-    for (const auto& [slotA, slotB] : island.pairs) {
-        const Body& a = slots[slotA].body;
-        const Body& b = slots[slotB].body;
-        const std::uint32_t solverA = solverIndexOf(island, slotA);
-        const std::uint32_t solverB = solverIndexOf(island, slotB);
-        const Real margin = tolerance + reach[solverA] + reach[solverB];
-        IslandContact& contact = contacts.emplace_back();
-        contact.manifold = manifoldWithin(pairGeometry(slots, slotA, slotB, margin), margin);
-        if (contact.manifold.pointCount == 0) {
-            contacts.pop_back();
-            continue;
+    if (context.threads > 1) {
+        findPairContactsOverThreads(island, slots, tolerance, reach, context.threads, contacts);
+    } else {
+        for (const auto& pair : island.pairs) {
+            if (!findPairContact(island, slots, tolerance, reach, pair,
+                                 contacts.emplace_back())) {
+                contacts.pop_back();
+            }
         }
-        contact.solverA = solverA;
-        contact.solverB = solverB;
-        contact.sideA = slotA;
-        contact.sideB = slotB;
-        // the lower dynamic body keeps the warm start; a static side never does
-        const bool aKeeps = !a.isStatic();
-        contact.owner = aKeeps ? contact.solverA : contact.solverB;
-        contact.ownerKey = aKeeps ? slotB : slotA;
-        const Material material =
-            a.isStatic()   ? mixMaterials(b.material, a.materialGiven ? std::optional(a.material)
-                                                                      : std::nullopt)
-            : b.isStatic() ? mixMaterials(a.material, b.materialGiven ? std::optional(b.material)
-                                                                      : std::nullopt)
-                           : mixMaterials(a.material, b.material);
-        setMaterial(contact, material);
     }
     addHalfSpaceContacts(island, slots, context, reach, contacts);
 }
 
 void buildConstraints(std::span<IslandContact> contacts, std::span<const BodySlot> slots,
-                      const CoupledIsland& island, std::vector<ContactConstraint>& constraints)
+                      const CoupledIsland& island, std::vector<ContactConstraint>& constraints,
+                      int threads)
 {
-    constraints.clear();
     const auto staticIndex = static_cast<std::uint32_t>(island.bodies.size());
     const auto centreOf = [&](std::uint32_t solver, std::uint32_t side, const Vec3& point) {
         if (solver != staticIndex) {
@@ -177,15 +237,22 @@ void buildConstraints(std::span<IslandContact> contacts, std::span<const BodySlo
         // a static body turns about its centre; a half-space has no centre (nothing turns it)
         return side < kPlaneSide ? slots[side].body.position : point;
     };
-    for (std::uint32_t index = 0; index < contacts.size(); ++index) {
-        IslandContact& contact = contacts[index];
-        contact.firstConstraint = static_cast<std::uint32_t>(constraints.size());
+    std::uint32_t points = 0;
+    for (IslandContact& contact : contacts) {
+        contact.firstConstraint = points;
+        points += static_cast<std::uint32_t>(contact.manifold.pointCount);
+    }
+    constraints.resize(points);
+    // each contact writes only its own constraints
+    parallelFor(contacts.size(), threads, [&](std::size_t index) {
+        const IslandContact& contact = contacts[index];
         for (int k = 0; k < contact.manifold.pointCount; ++k) {
             const PairContactPoint& point = contact.manifold.points[k];
-            ContactConstraint& c = constraints.emplace_back();
+            ContactConstraint& c = constraints[contact.firstConstraint + k];
+            c = ContactConstraint{};
             c.bodyA = contact.solverA;
             c.bodyB = contact.solverB;
-            c.contact = index;
+            c.contact = static_cast<std::uint32_t>(index);
             c.point = static_cast<std::uint32_t>(k);
             c.normal = contact.manifold.normal;
             c.offsetA = point.position - centreOf(contact.solverA, contact.sideA, point.position);
@@ -195,7 +262,7 @@ void buildConstraints(std::span<IslandContact> contacts, std::span<const BodySlo
             c.staticFriction = contact.staticFriction;
             c.restitution = contact.restitution;
         }
-    }
+    });
 }
 
 } // namespace tumble

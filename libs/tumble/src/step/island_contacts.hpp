@@ -52,13 +52,16 @@ const CuboidPairGeometry& pairGeometry(std::span<BodySlot> slots, std::uint32_t 
 
 /// Contacts of the island's bodies at their current poses, every point within a speculative
 /// margin that covers how far the two sides can approach each other over `horizon` seconds.
-/// Writes the pair geometry of the island's bodies only.
+/// Writes the pair geometry of the island's bodies only. With `context.threads` > 1 each body's
+/// pairs go to one thread, and the contacts are the same as from one.
 void findIslandContacts(const CoupledIsland& island, std::span<BodySlot> slots,
                         const StepContext& context, Real horizon,
                         std::vector<IslandContact>& contacts);
 
-/// One constraint per contact point, with the geometry and material set (impulses zero).
+/// One constraint per contact point, with the geometry and material set (impulses zero); the
+/// contacts spread over `threads`, each writing its own constraints.
 void buildConstraints(std::span<IslandContact> contacts, std::span<const BodySlot> slots,
-                      const CoupledIsland& island, std::vector<ContactConstraint>& constraints);
+                      const CoupledIsland& island, std::vector<ContactConstraint>& constraints,
+                      int threads = 1);
 
 } // namespace tumble

@@ -4,6 +4,8 @@
 #include "body_state.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/island_solver.hpp"
+#include "parallel_for.hpp"
+#include "step/owner_groups.hpp"
 #include "step/resting_load_guess.hpp"
 
 #include <algorithm>
@@ -108,16 +110,19 @@ void startFrom(ContactConstraint& c, const CachedContactPoint& cached, Real tau)
 void loadWarmStart(const CoupledIsland& island, std::span<const BodySlot> slots,
                    std::span<const IslandContact> contacts,
                    std::span<ContactConstraint> constraints, Real tau,
-                   const WorldSettings& settings)
+                   const WorldSettings& settings, int threads)
 {
     // the points in contact of a contact new to the island get the carried weight (11.13); a
     // point new to a contact that goes on starts from nothing, as its neighbours carry the load
-    // one vector per thread, kept from step to step
-    thread_local std::vector<std::uint8_t> guess;
+    // one vector per calling thread, kept from step to step (named by reference in the lambda,
+    // where a thread_local would be each worker's own)
+    thread_local std::vector<std::uint8_t> keptGuess;
+    std::vector<std::uint8_t>& guess = keptGuess;
     guess.assign(constraints.size(), 0);
-    bool anyGuess = false;
     const Real reach = kWarmStartReach * settings.contactTolerance;
-    for (const IslandContact& contact : contacts) {
+    // each contact reads its owner's cache and writes only its own constraints
+    parallelFor(contacts.size(), threads, [&](std::size_t index) {
+        const IslandContact& contact = contacts[index];
         const BodySlot& owner = slots[island.bodies[contact.owner]];
         const std::vector<CachedContactPoint>& cache = owner.contactCache;
         // a pair keeps at most 4 points (storeWarmStart), so a bit each marks those taken
@@ -146,36 +151,48 @@ void loadWarmStart(const CoupledIsland& island, std::span<const BodySlot> slots,
                 startFrom(c, cache[match[k]], tau);
             } else if (!goesOn && c.separation <= settings.contactTolerance) {
                 guess[contact.firstConstraint + static_cast<std::uint32_t>(k)] = 1;
-                anyGuess = true;
             }
         }
-    }
-    if (anyGuess) {
+    });
+    if (std::find(guess.begin(), guess.end(), std::uint8_t{1}) != guess.end()) {
         guessRestingImpulses(island, slots, contacts, constraints, guess, settings.gravity, tau);
     }
 }
 
 void storeWarmStart(const CoupledIsland& island, std::span<BodySlot> slots,
                     std::span<const IslandContact> contacts,
-                    std::span<const ContactConstraint> constraints, Real tau)
+                    std::span<const ContactConstraint> constraints, Real tau, int threads)
 {
+    // each body's cache is written by its own contacts only, in their order (as from one pass)
+    thread_local std::vector<std::uint32_t> keptOwnerOf;
+    thread_local OwnerGroups keptGroups;
+    std::vector<std::uint32_t>& ownerOf = keptOwnerOf;
+    OwnerGroups& groups = keptGroups;
+    ownerOf.resize(contacts.size());
+    for (std::size_t index = 0; index < contacts.size(); ++index) {
+        ownerOf[index] = contacts[index].owner;
+    }
+    groups.build(ownerOf, island.bodies.size());
     for (const std::uint32_t slot : island.bodies) {
         slots[slot].contactCache.clear();
     }
-    for (const IslandContact& contact : contacts) {
-        BodySlot& owner = slots[island.bodies[contact.owner]];
-        for (int k = 0; k < contact.manifold.pointCount; ++k) {
-            const ContactConstraint& c = constraints[contact.firstConstraint + k];
-            if (c.normalImpulse <= 0.0) {
-                continue;
+    parallelFor(groups.count(), threads, [&](std::size_t g) {
+        for (const std::uint32_t index : groups.group(g)) {
+            const IslandContact& contact = contacts[index];
+            BodySlot& owner = slots[island.bodies[contact.owner]];
+            for (int k = 0; k < contact.manifold.pointCount; ++k) {
+                const ContactConstraint& c = constraints[contact.firstConstraint + k];
+                if (c.normalImpulse <= 0.0) {
+                    continue;
+                }
+                const PairContactPoint& point = contact.manifold.points[k];
+                owner.contactCache.push_back(
+                    {contact.ownerKey, point.id, inBodyFrame(owner.body, point.position),
+                     c.normalImpulse,
+                     c.tangentImpulse1 * c.tangent1 + c.tangentImpulse2 * c.tangent2, tau});
             }
-            const PairContactPoint& point = contact.manifold.points[k];
-            owner.contactCache.push_back(
-                {contact.ownerKey, point.id, inBodyFrame(owner.body, point.position),
-                 c.normalImpulse, c.tangentImpulse1 * c.tangent1 + c.tangentImpulse2 * c.tangent2,
-                 tau});
         }
-    }
+    });
 }
 
 void BodyConstraintLists::build(std::span<const ContactConstraint> constraints,

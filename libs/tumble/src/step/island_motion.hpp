@@ -13,17 +13,18 @@
 namespace tumble {
 
 /// (11.6): each constraint starts from its point's impulses of the last sub-step, scaled down to
-/// a shorter tau (never up) and clamped to its cone; a point in contact with none starts from the weight it
-/// carries (11.13).
+/// a shorter tau (never up) and clamped to its cone; a point in contact with none starts from the
+/// weight it carries (11.13). The contacts spread over `threads`.
 void loadWarmStart(const CoupledIsland& island, std::span<const BodySlot> slots,
                    std::span<const IslandContact> contacts,
                    std::span<ContactConstraint> constraints, Real tau,
-                   const WorldSettings& settings);
+                   const WorldSettings& settings, int threads = 1);
 
-/// Keeps the impulses of a solve of length tau, and tau, in the owners' caches.
+/// Keeps the impulses of a solve of length tau, and tau, in the owners' caches; each owner's
+/// contacts go to one of `threads`.
 void storeWarmStart(const CoupledIsland& island, std::span<BodySlot> slots,
                     std::span<const IslandContact> contacts,
-                    std::span<const ContactConstraint> constraints, Real tau);
+                    std::span<const ContactConstraint> constraints, Real tau, int threads = 1);
 
 /// The constraints of each body of an island, in order: body i's are
 /// indices[starts[i]] .. indices[starts[i + 1]] (the static solver body has none).

@@ -1,0 +1,29 @@
+// A loop whose iterations write disjoint state, spread over threads (OpenMP where built with it).
+#pragma once
+
+#include <cstddef>
+
+namespace tumble {
+
+/// Calls `body(i)` for each i in [0, count), over `threads` threads in a static schedule when
+/// threads > 1. Each call must write only what no other call reads or writes, so the result is
+/// the same for any number of threads (11.5c).
+template <typename Body>
+void parallelFor(std::size_t count, [[maybe_unused]] int threads, const Body& body)
+{
+#ifdef TUMBLE_HAVE_OPENMP
+    if (threads > 1 && count > 1) {
+        const auto signedCount = static_cast<std::ptrdiff_t>(count);
+#pragma omp parallel for schedule(static) num_threads(threads)
+        for (std::ptrdiff_t i = 0; i < signedCount; ++i) {
+            body(static_cast<std::size_t>(i));
+        }
+        return;
+    }
+#endif
+    for (std::size_t i = 0; i < count; ++i) {
+        body(i);
+    }
+}
+
+} // namespace tumble
