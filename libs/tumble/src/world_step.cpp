@@ -5,6 +5,7 @@
 #include "body_slot.hpp"
 #include "dynamics/islands.hpp"
 #include "dynamics/rest.hpp"
+#include "parallel_for.hpp"
 #include "step/coupled_step.hpp"
 #include "step/island_contacts.hpp"
 #include "step/step_scratch.hpp"
@@ -70,14 +71,45 @@ void World::findPairs(detail::StepScratch& scratch, Real dt)
         scratch.proxies.push_back(BroadPhaseProxy{box, index, !body.isStatic()});
     }
     scratch.broadPhase.update(scratch.proxies);
+    // narrow phase's first test: boxes that cannot touch within the step link nothing, and a
+    // body near another but apart keeps the exact path (10.4)
+    const std::span<const ProxyPair> pairs = scratch.broadPhase.pairs();
+    scratch.pairTouches.assign(pairs.size(), 0);
+    const auto testPair = [&](std::size_t k) {
+        const std::uint32_t a = scratch.proxies[pairs[k].a].body;
+        const std::uint32_t b = scratch.proxies[pairs[k].b].body;
+        scratch.pairTouches[k] =
+            mayTouch(m_slots, std::min(a, b), std::max(a, b), m_settings.gravity, dt, margin) ? 1
+                                                                                              : 0;
+    };
+    const int threads = pairs.size() >= kLargeIslandPairs ? threadCount() : 1;
+    if (threads > 1) {
+        // a pair writes the geometry its dynamic body keeps (9.11): each body's pairs go to
+        // one thread, in their order (11.5c)
+        scratch.pairOwners.resize(pairs.size());
+        for (std::size_t k = 0; k < pairs.size(); ++k) {
+            const std::uint32_t a = scratch.proxies[pairs[k].a].body;
+            const std::uint32_t b = scratch.proxies[pairs[k].b].body;
+            const std::uint32_t lower = std::min(a, b);
+            scratch.pairOwners[k] = m_slots[lower].body.isStatic() ? std::max(a, b) : lower;
+        }
+        scratch.pairGroups.build(scratch.pairOwners, m_slots.size());
+        const OwnerGroups& groups = scratch.pairGroups;
+        parallelFor(groups.count(), threads, [&](std::size_t g) {
+            for (const std::uint32_t k : groups.group(g)) {
+                testPair(k);
+            }
+        });
+    } else {
+        for (std::size_t k = 0; k < pairs.size(); ++k) {
+            testPair(k);
+        }
+    }
     scratch.links.clear();
-    for (const ProxyPair& pair : scratch.broadPhase.pairs()) {
-        const std::uint32_t a = scratch.proxies[pair.a].body;
-        const std::uint32_t b = scratch.proxies[pair.b].body;
-        // narrow phase's first test: boxes that cannot touch within the step link nothing, and
-        // a body near another but apart keeps the exact path (10.4)
-        if (mayTouch(m_slots, std::min(a, b), std::max(a, b), m_settings.gravity, dt, margin)) {
-            scratch.links.push_back({a, b});
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+        if (scratch.pairTouches[k] != 0) {
+            scratch.links.push_back(
+                {scratch.proxies[pairs[k].a].body, scratch.proxies[pairs[k].b].body});
         }
     }
     // (9.11): kept geometry nobody asked for since the last broad phase is of a pair gone

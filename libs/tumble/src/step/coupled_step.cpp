@@ -326,7 +326,7 @@ void CoupledStep::finishSubstep(Real tau)
                              m_bodies, kineticBefore, m_settings.contactTolerance,
                              m_context.time + m_elapsed, m_events);
     }
-    pushOutOfPenetration(m_island, m_slots, m_constraints, tau, m_settings);
+    pushOutOfPenetration(m_island, m_slots, m_constraints, tau, m_settings, m_context.threads);
     for (std::size_t i = 0; i < count; ++i) {
         m_energies[i] = bookCorrection(body(i), m_energies[i], m_settings.gravity);
     }

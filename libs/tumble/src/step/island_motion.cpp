@@ -254,29 +254,35 @@ void integrateIslandBody(Body& body, const Vec3& velocityStart,
 
 void pushOutOfPenetration(const CoupledIsland& island, std::span<BodySlot> slots,
                           std::span<const ContactConstraint> constraints, Real tau,
-                          const WorldSettings& settings)
+                          const WorldSettings& settings, int threads)
 {
     const std::size_t count = island.bodies.size();
     // the points that will be deeper than the tolerance at the end of the sub-step (none in a
-    // settled pile, which then costs one pass over its constraints)
-    std::vector<ContactConstraint> deep;
-    for (const ContactConstraint& c : constraints) {
+    // settled pile, which then costs one pass over its constraints), by how much
+    thread_local std::vector<Real> keptExcess;
+    std::vector<Real>& excess = keptExcess;
+    excess.resize(constraints.size());
+    parallelFor(constraints.size(), threads, [&](std::size_t k) {
+        const ContactConstraint& c = constraints[k];
         const Body* bodyA = c.bodyA < count ? &slots[island.bodies[c.bodyA]].body : nullptr;
         const Body* bodyB = c.bodyB < count ? &slots[island.bodies[c.bodyB]].body : nullptr;
         const Vec3 velocityA = bodyA ? bodyA->velocityAt(bodyA->position + c.offsetA) : Vec3(0.0);
         const Vec3 velocityB = bodyB ? bodyB->velocityAt(bodyB->position + c.offsetB) : Vec3(0.0);
         const Real predicted = c.separation + tau * glm::dot(c.normal, velocityB - velocityA);
-        const Real excess = -predicted - settings.contactTolerance;
-        if (excess <= 0.0) {
+        excess[k] = -predicted - settings.contactTolerance;
+    });
+    std::vector<ContactConstraint> deep;
+    for (std::size_t k = 0; k < constraints.size(); ++k) {
+        if (excess[k] <= 0.0) {
             continue;
         }
-        ContactConstraint& push = deep.emplace_back(c);
+        ContactConstraint& push = deep.emplace_back(constraints[k]);
         push.normalImpulse = 0.0;
         push.tangentImpulse1 = 0.0;
         push.tangentImpulse2 = 0.0;
         push.kineticFriction = 0.0;
         push.staticFriction = 0.0;
-        push.targetNormalVelocity = kPushOutFraction * excess / tau;
+        push.targetNormalVelocity = kPushOutFraction * excess[k] / tau;
     }
     if (deep.empty()) {
         return;
@@ -293,7 +299,7 @@ void pushOutOfPenetration(const CoupledIsland& island, std::span<BodySlot> slots
         prepareConstraint(push, pseudo, {ConstraintTarget::Substep, tau, 0.0, 0.0});
         push.targetNormalVelocity = target;
     }
-    solveConstraints(deep, pseudo, kPushOutSweeps, kPushOutConvergence);
+    solveConstraints(deep, pseudo, kPushOutSweeps, kPushOutConvergence, 0.0, threads);
     for (std::size_t i = 0; i < count; ++i) {
         Body& body = slots[island.bodies[i]].body;
         if (lengthSquared(pseudo[i].linearVelocity) + lengthSquared(pseudo[i].angularVelocity) ==

@@ -50,10 +50,10 @@ void integrateIslandBody(Body& body, const Vec3& velocityStart,
 
 /// (11.10): points predicted to end the sub-step deeper than the contact tolerance are pushed
 /// apart by a fraction of the excess with pseudo-velocities that move the poses only, so the
-/// push-out adds no kinetic energy.
+/// push-out adds no kinetic energy. The points spread over `threads`, as in solveConstraints.
 void pushOutOfPenetration(const CoupledIsland& island, std::span<BodySlot> slots,
                           std::span<const ContactConstraint> constraints, Real tau,
-                          const WorldSettings& settings);
+                          const WorldSettings& settings, int threads = 1);
 
 /// Marks the island's bodies that end the sub-step in contact with anything.
 void markTouching(const CoupledIsland& island, std::span<BodySlot> slots,

@@ -5,6 +5,7 @@
 #include "collision/aabb.hpp"
 #include "collision/broad_phase.hpp"
 #include "step/coupled_step.hpp"
+#include "step/owner_groups.hpp"
 #include "step/step_events.hpp"
 #include "tumble/world.hpp"
 
@@ -17,7 +18,12 @@ struct StepScratch {
     /// The box of each slot over the step (empty for a dead slot).
     std::vector<Aabb> sweptBoxes;
     BroadPhase broadPhase;
-    /// The broad phase's pairs as slot indices, lower first.
+    /// Whether each of the broad phase's pairs may touch within the step (10.4), and the body
+    /// whose kept geometry it writes, grouped for the threads (11.5c).
+    std::vector<std::uint8_t> pairTouches;
+    std::vector<std::uint32_t> pairOwners;
+    OwnerGroups pairGroups;
+    /// The broad phase's pairs that may touch, as slot indices.
     std::vector<ProxyPair> links;
     /// 1 for a live dynamic body, awake or asleep: islands are built over all of them.
     std::vector<std::uint8_t> dynamic;
