@@ -2,6 +2,7 @@
 // (9.11), and stays that close to a fresh one (docs/physics/09-box-box.md).
 #include "collision/pair_geometry_cache.hpp"
 
+#include "step/island_contacts.hpp"
 #include "support/glm_printers.hpp"
 
 #include <gtest/gtest.h>
@@ -114,6 +115,35 @@ TEST(PairGeometryCache, PairsNotAskedForAreForgotten)
     cache.geometry(7, kBelow, kUnit, kAbove, kUnit, kMargin);
     cache.forgetUnasked();
     EXPECT_EQ(cache.size(), 1u);
+}
+
+TEST(PairGeometryCache, ABodyOnTwoStaticBoxesKeepsBothPairs)
+{
+    // slots 0 and 1: static boxes side by side; slot 2: a cube across both. The cube keeps
+    // both pairs (9.11), each under its static box, so neither pushes the other out
+    std::vector<BodySlot> slots(3);
+    for (std::uint32_t k = 0; k < 2; ++k) {
+        slots[k].body.motion = BodyMotion::Static;
+        slots[k].body.position = Vec3(2.0 * k - 1.0, 0.0, 0.0);
+    }
+    slots[2].body.position = Vec3(0.0, 2.0 - 1e-5, 0.0);
+    EXPECT_EQ(pairGeometryOwner(slots, 0, 2), 2u);
+    EXPECT_EQ(pairGeometryOwner(slots, 1, 2), 2u);
+    pairGeometry(slots, 0, 2, kMargin);
+    pairGeometry(slots, 1, 2, kMargin);
+    slots[2].pairGeometry.forgetUnasked();
+    EXPECT_EQ(slots[2].pairGeometry.size(), 2u);
+    // asked again in turn, each pair finds its own entry (the kept ones stay where they are)
+    const CuboidPairGeometry* left = &pairGeometry(slots, 0, 2, kMargin);
+    const CuboidPairGeometry* right = &pairGeometry(slots, 1, 2, kMargin);
+    EXPECT_NE(left, right);
+    EXPECT_EQ(&pairGeometry(slots, 0, 2, kMargin), left);
+    EXPECT_EQ(&pairGeometry(slots, 1, 2, kMargin), right);
+    EXPECT_EQ(slots[2].pairGeometry.size(), 2u);
+    EXPECT_EQ(manifoldWithin(*left, kMargin).pointCount, 4);
+    EXPECT_EQ(manifoldWithin(*right, kMargin).pointCount, 4);
+    EXPECT_TRUE(slots[0].pairGeometry.size() == 0 && slots[1].pairGeometry.size() == 0)
+        << "a static box keeps no pair";
 }
 
 } // namespace

@@ -22,7 +22,8 @@ namespace tumble {
 namespace {
 
 /// (11.5c): an island of at least this many linked pairs (some kColouredSweepPoints points, at
-/// four a face contact) is large: it takes all the threads inside its step.
+/// four a face contact) is large: it takes all the threads inside its step. The broad phase's
+/// touch test takes the threads from as many pairs.
 constexpr std::size_t kLargeIslandPairs = 256;
 
 /// A bound on the angular speed over a torque-free step: |w| <= |L| / I_min <= |w0| I_max / I_min
@@ -90,8 +91,7 @@ void World::findPairs(detail::StepScratch& scratch, Real dt)
         for (std::size_t k = 0; k < pairs.size(); ++k) {
             const std::uint32_t a = scratch.proxies[pairs[k].a].body;
             const std::uint32_t b = scratch.proxies[pairs[k].b].body;
-            const std::uint32_t lower = std::min(a, b);
-            scratch.pairOwners[k] = m_slots[lower].body.isStatic() ? std::max(a, b) : lower;
+            scratch.pairOwners[k] = pairGeometryOwner(m_slots, std::min(a, b), std::max(a, b));
         }
         scratch.pairGroups.build(scratch.pairOwners, m_slots.size());
         const OwnerGroups& groups = scratch.pairGroups;

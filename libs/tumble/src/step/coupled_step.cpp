@@ -262,7 +262,8 @@ void CoupledStep::solveSubstep(Real tau)
                                            m_settings.restitutionThreshold};
     prepareConstraints(m_constraints, m_bodies, targets, m_context.threads);
     keepExactArrivals(m_constraints, m_gapMotions, tau, m_settings.contactTolerance);
-    loadWarmStart(m_island, m_slots, m_contacts, m_constraints, tau, m_settings, m_context.threads);
+    loadWarmStart(m_island, m_slots, m_contacts, m_constraints, tau, m_settings,
+                  m_context.threads);
     warmStart(m_constraints, m_bodies, m_context.threads);
     countSolve(solveConstraints(m_constraints, m_bodies, m_settings.solverIterations,
                                 kRestingConvergence, restingVelocityTolerance(tau),

@@ -115,9 +115,12 @@ const CuboidPairGeometry& pairGeometry(std::span<BodySlot> slots, std::uint32_t 
 {
     const Body& a = slots[slotA].body;
     const Body& b = slots[slotB].body;
-    BodySlot& owner = a.isStatic() ? slots[slotB] : slots[slotA];
-    return owner.pairGeometry.geometry(slotB, {a.position, a.orientation}, a.shape.halfExtents(),
-                                       {b.position, b.orientation}, b.shape.halfExtents(), margin);
+    // kept under the other side's slot, so that a body's pairs with two static boxes are apart
+    const std::uint32_t owner = pairGeometryOwner(slots, slotA, slotB);
+    const std::uint32_t other = owner == slotA ? slotB : slotA;
+    return slots[owner].pairGeometry.geometry(other, {a.position, a.orientation},
+                                              a.shape.halfExtents(), {b.position, b.orientation},
+                                              b.shape.halfExtents(), margin);
 }
 
 bool mayTouch(std::span<BodySlot> slots, std::uint32_t slotA, std::uint32_t slotB,
@@ -132,8 +135,8 @@ namespace {
 
 /// The contact of one of the island's pairs of bodies, if any point is within the margin.
 bool findPairContact(const CoupledIsland& island, std::span<BodySlot> slots, Real tolerance,
-                     std::span<const Real> reach, const std::pair<std::uint32_t, std::uint32_t>& pair,
-                     IslandContact& contact)
+                     std::span<const Real> reach,
+                     const std::pair<std::uint32_t, std::uint32_t>& pair, IslandContact& contact)
 {
     const auto [slotA, slotB] = pair;
     const Body& a = slots[slotA].body;
@@ -185,7 +188,7 @@ void findPairContactsOverThreads(const CoupledIsland& island, std::span<BodySlot
     ownerOf.resize(pairs);
     for (std::size_t k = 0; k < pairs; ++k) {
         const auto [slotA, slotB] = island.pairs[k];
-        ownerOf[k] = solverIndexOf(island, slots[slotA].body.isStatic() ? slotB : slotA);
+        ownerOf[k] = solverIndexOf(island, pairGeometryOwner(slots, slotA, slotB));
     }
     groups.build(ownerOf, island.bodies.size());
     found.assign(pairs, 0);

@@ -45,8 +45,16 @@ Material mixMaterials(const Material& dynamic, const std::optional<Material>& ot
 bool mayTouch(std::span<BodySlot> slots, std::uint32_t slotA, std::uint32_t slotB,
               const Vec3& gravity, Real horizon, Real tolerance);
 
-/// The box-box geometry of the pair (slotA < slotB) deciding `margin`, kept by its owner: the
-/// dynamic body of the two, the lower if both are (9.11).
+/// The slot whose kept pair geometry (9.11) holds the pair (slotA < slotB): the dynamic body of
+/// the two, the lower if both are. Work on pairs goes to threads grouped by it (11.5c).
+inline std::uint32_t pairGeometryOwner(std::span<const BodySlot> slots, std::uint32_t slotA,
+                                       std::uint32_t slotB)
+{
+    return slots[slotA].body.isStatic() ? slotB : slotA;
+}
+
+/// The box-box geometry of the pair (slotA < slotB) deciding `margin`, kept by its owner
+/// (pairGeometryOwner) under the other side's slot.
 const CuboidPairGeometry& pairGeometry(std::span<BodySlot> slots, std::uint32_t slotA,
                                        std::uint32_t slotB, Real margin);
 
