@@ -1,4 +1,4 @@
-// A loop whose iterations write disjoint state, spread over threads (OpenMP where built with it).
+// Loops whose iterations write disjoint state, spread over threads (OpenMP where built with it).
 #pragma once
 
 #include <cstddef>
@@ -24,6 +24,30 @@ void parallelFor(std::size_t count, [[maybe_unused]] int threads, const Body& bo
     for (std::size_t i = 0; i < count; ++i) {
         body(i);
     }
+}
+
+/// Whether `holds(i)` for some i in [0, count), each i tested on one of `threads` threads in a
+/// static schedule when threads > 1. The answer does not depend on the number of threads.
+template <typename Predicate>
+bool parallelAnyOf(std::size_t count, [[maybe_unused]] int threads, const Predicate& holds)
+{
+#ifdef TUMBLE_HAVE_OPENMP
+    if (threads > 1 && count > 1) {
+        const auto signedCount = static_cast<std::ptrdiff_t>(count);
+        bool found = false;
+#pragma omp parallel for schedule(static) num_threads(threads) reduction(|| : found)
+        for (std::ptrdiff_t i = 0; i < signedCount; ++i) {
+            found = found || holds(static_cast<std::size_t>(i));
+        }
+        return found;
+    }
+#endif
+    for (std::size_t i = 0; i < count; ++i) {
+        if (holds(i)) {
+            return true;
+        }
+    }
+    return false;
 }
 
 } // namespace tumble

@@ -71,7 +71,7 @@ void World::findPairs(detail::StepScratch& scratch, Real dt)
         scratch.sweptBoxes[index] = box;
         scratch.proxies.push_back(BroadPhaseProxy{box, index, !body.isStatic()});
     }
-    scratch.broadPhase.update(scratch.proxies);
+    scratch.broadPhase.update(scratch.proxies, threadCount());
     // narrow phase's first test: boxes that cannot touch within the step link nothing, and a
     // body near another but apart keeps the exact path (10.4)
     const std::span<const ProxyPair> pairs = scratch.broadPhase.pairs();

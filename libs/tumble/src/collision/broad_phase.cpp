@@ -2,6 +2,8 @@
 // Baraff 1992 on coherence; Ericson 2005, 7.5).
 #include "collision/broad_phase.hpp"
 
+#include "parallel_for.hpp"
+
 #include <algorithm>
 #include <cstddef>
 
@@ -17,6 +19,9 @@ bool sweepsBefore(const Entry& first, const Entry& second, int axis)
     const Real secondMin = second.box.min[axis];
     return firstMin < secondMin || (firstMin == secondMin && first.proxy < second.proxy);
 }
+
+/// A shared sweep gives each share at least this many entries, so a share pays for its start.
+constexpr std::size_t kEntriesPerShare = 128;
 
 /// Moves allowed to the insertion sort, per entry, before it gives way to std::sort. Boxes that
 /// pass a few others need fewer; a pile whose layers share one low end, jittering, reorders
@@ -51,11 +56,11 @@ int axisOfLargestSpread(std::span<const BroadPhaseProxy> proxies)
     return axis;
 }
 
-void BroadPhase::update(std::span<const BroadPhaseProxy> proxies)
+void BroadPhase::update(std::span<const BroadPhaseProxy> proxies, int threads)
 {
     refreshEntries(proxies, axisOfLargestSpread(proxies));
     sortEntries();
-    sweep();
+    sweep(threads);
 }
 
 void BroadPhase::refreshEntries(std::span<const BroadPhaseProxy> proxies, int axis)
@@ -110,22 +115,42 @@ void BroadPhase::sortEntries()
     }
 }
 
-void BroadPhase::sweep()
+void BroadPhase::sweepFrom(std::size_t begin, std::size_t end,
+                           std::vector<ProxyPair>& pairs) const
 {
     // every box meets the boxes that start along the axis before it ends; the other two axes
     // decide (Ericson 2005, 7.5)
-    m_pairs.clear();
     const int axis = m_axis;
     const std::size_t count = m_entries.size();
-    for (std::size_t i = 0; i < count; ++i) {
+    for (std::size_t i = begin; i < end; ++i) {
         const Entry& first = m_entries[i];
-        const Real end = first.box.max[axis];
-        for (std::size_t j = i + 1; j < count && m_entries[j].box.min[axis] <= end; ++j) {
+        const Real reach = first.box.max[axis];
+        for (std::size_t j = i + 1; j < count && m_entries[j].box.min[axis] <= reach; ++j) {
             const Entry& second = m_entries[j];
             if ((first.movable || second.movable) && overlaps(first.box, second.box)) {
-                m_pairs.push_back(ProxyPair{std::min(first.proxy, second.proxy),
-                                            std::max(first.proxy, second.proxy)});
+                pairs.push_back(ProxyPair{std::min(first.proxy, second.proxy),
+                                          std::max(first.proxy, second.proxy)});
             }
+        }
+    }
+}
+
+void BroadPhase::sweep(int threads)
+{
+    m_pairs.clear();
+    const std::size_t count = m_entries.size();
+    if (threads <= 1 || count < kEntriesPerShare * static_cast<std::size_t>(threads)) {
+        sweepFrom(0, count, m_pairs);
+    } else {
+        // each share of the sorted entries finds the pairs of its first boxes
+        const std::size_t shares = count / kEntriesPerShare;
+        m_sharePairs.resize(shares);
+        parallelFor(shares, threads, [&](std::size_t share) {
+            m_sharePairs[share].clear();
+            sweepFrom(count * share / shares, count * (share + 1) / shares, m_sharePairs[share]);
+        });
+        for (const std::vector<ProxyPair>& pairs : m_sharePairs) {
+            m_pairs.insert(m_pairs.end(), pairs.begin(), pairs.end());
         }
     }
     // proxy order, not sweep order, so the pairs depend on the proxies alone

@@ -34,8 +34,8 @@ struct ProxyPair {
 class BroadPhase {
 public:
     /// Finds the pairs of `proxies` whose boxes overlap (touching counts) and of which at least
-    /// one is movable.
-    void update(std::span<const BroadPhaseProxy> proxies);
+    /// one is movable. The sweep spreads over `threads`; the pairs are the same for any number.
+    void update(std::span<const BroadPhaseProxy> proxies, int threads = 1);
 
     /// The pairs of the last update: proxy indices a < b, sorted lexicographically, each once.
     std::span<const ProxyPair> pairs() const { return m_pairs; }
@@ -54,10 +54,13 @@ private:
     void refreshEntries(std::span<const BroadPhaseProxy> proxies, int axis);
     void sortEntries();
     void sortFromScratch();
-    void sweep();
+    void sweep(int threads);
+    void sweepFrom(std::size_t begin, std::size_t end, std::vector<ProxyPair>& pairs) const;
 
     std::vector<Entry> m_entries;
     std::vector<ProxyPair> m_pairs;
+    /// The pairs found from each share of the sorted entries, when the sweep is shared.
+    std::vector<std::vector<ProxyPair>> m_sharePairs;
     int m_axis = 0;
 };
 

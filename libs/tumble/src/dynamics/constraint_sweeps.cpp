@@ -69,19 +69,12 @@ void solvePoint(ContactConstraint& c, SolverBody& a, SolverBody& b, SweepMaxima&
                   std::sqrt(tangential1 * tangential1 + tangential2 * tangential2)});
 }
 
-/// (11.5c) The order of a coloured sweep: runs of consecutive points of one pair of bodies (a
-/// contact's manifold), coloured so that no colour moves a dynamic body twice.
-struct ColouredSchedule {
-    /// Run k is constraints [runStart[k], runStart[k + 1]).
-    std::vector<std::uint32_t> runStart;
-    ConstraintColours colours;
-};
-
-ColouredSchedule colourRuns(std::span<const ContactConstraint> constraints,
-                            std::span<const SolverBody> bodies)
+/// The first point of each run of consecutive points of one pair of bodies, and the pairs.
+void findRuns(std::span<const ContactConstraint> constraints, SweepSchedule& schedule,
+              std::vector<ProxyPair>& runBodies)
 {
-    ColouredSchedule schedule;
-    std::vector<ProxyPair> runBodies;
+    schedule.runStart.clear();
+    runBodies.clear();
     for (std::size_t i = 0; i < constraints.size(); ++i) {
         const ContactConstraint& c = constraints[i];
         if (i == 0 || c.bodyA != constraints[i - 1].bodyA ||
@@ -91,19 +84,13 @@ ColouredSchedule colourRuns(std::span<const ContactConstraint> constraints,
         }
     }
     schedule.runStart.push_back(static_cast<std::uint32_t>(constraints.size()));
-    std::vector<std::uint8_t> fixed(bodies.size());
-    for (std::size_t i = 0; i < bodies.size(); ++i) {
-        fixed[i] = isFixed(bodies[i]) ? 1 : 0;
-    }
-    schedule.colours = colourConstraints(runBodies, fixed, kMaxConstraintColours);
-    return schedule;
 }
 
 /// One pass colour by colour, `step(c, a, b, maxima)` at each point; the runs of a colour share
 /// no dynamic body, so any split of them over threads gives the same velocities and impulses as
 /// one thread (11.5c).
 template <typename Constraint, typename PointStep>
-SweepMaxima colouredPass(const ColouredSchedule& schedule, std::span<Constraint> constraints,
+SweepMaxima colouredPass(const SweepSchedule& schedule, std::span<Constraint> constraints,
                          std::span<SolverBody> bodies, int threads, const PointStep& step)
 {
     const ConstraintColours& colours = schedule.colours;
@@ -155,15 +142,38 @@ SweepMaxima colouredPass(const ColouredSchedule& schedule, std::span<Constraint>
 
 } // namespace
 
+void scheduleSweeps(std::span<const ContactConstraint> constraints,
+                    std::span<const SolverBody> bodies, SweepSchedule& schedule)
+{
+    schedule.coloured = constraints.size() >= kColouredSweepPoints;
+    if (!schedule.coloured) {
+        return;
+    }
+    std::vector<ProxyPair> runBodies;
+    findRuns(constraints, schedule, runBodies);
+    std::vector<std::uint8_t> fixed(bodies.size());
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        fixed[i] = isFixed(bodies[i]) ? 1 : 0;
+    }
+    schedule.colours = colourConstraints(runBodies, fixed, kMaxConstraintColours);
+}
+
 int solveConstraints(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
                      int iterations, Real convergence, Real velocityTolerance, int threads)
 {
-    const bool coloured = constraints.size() >= kColouredSweepPoints;
-    const ColouredSchedule schedule =
-        coloured ? colourRuns(constraints, bodies) : ColouredSchedule{};
+    SweepSchedule schedule;
+    scheduleSweeps(constraints, bodies, schedule);
+    return solveConstraints(constraints, bodies, schedule, iterations, convergence,
+                            velocityTolerance, threads);
+}
+
+int solveConstraints(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
+                     const SweepSchedule& schedule, int iterations, Real convergence,
+                     Real velocityTolerance, int threads)
+{
     for (int sweep = 1; sweep <= iterations; ++sweep) {
         SweepMaxima maxima;
-        if (coloured) {
+        if (schedule.coloured) {
             maxima = colouredPass(schedule, constraints, bodies, threads, solvePoint);
         } else {
             for (ContactConstraint& c : constraints) {
@@ -181,14 +191,22 @@ int solveConstraints(std::span<ContactConstraint> constraints, std::span<SolverB
 void warmStart(std::span<const ContactConstraint> constraints, std::span<SolverBody> bodies,
                int threads)
 {
-    if (constraints.size() < kColouredSweepPoints) {
+    SweepSchedule schedule;
+    scheduleSweeps(constraints, bodies, schedule);
+    warmStart(constraints, bodies, schedule, threads);
+}
+
+void warmStart(std::span<const ContactConstraint> constraints, std::span<SolverBody> bodies,
+               const SweepSchedule& schedule, int threads)
+{
+    if (!schedule.coloured) {
         for (const ContactConstraint& c : constraints) {
             warmStartPoint(c, bodies[c.bodyA], bodies[c.bodyB]);
         }
         return;
     }
     // in the order of the sweeps (11.5c), each colour over the threads
-    colouredPass(colourRuns(constraints, bodies), constraints, bodies, threads,
+    colouredPass(schedule, constraints, bodies, threads,
                  [](const ContactConstraint& c, SolverBody& a, SolverBody& b, SweepMaxima&) {
                      warmStartPoint(c, a, b);
                  });

@@ -2,6 +2,7 @@
 // start, solve (docs/physics/11-island-solver.md).
 #pragma once
 
+#include "dynamics/constraint_colouring.hpp"
 #include "dynamics/contact_constraint.hpp"
 
 #include <span>
@@ -47,11 +48,29 @@ void prepareConstraints(std::span<ContactConstraint> constraints,
 /// point got an impulse (none does when every such point has e = 0).
 bool applyRestitution(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies);
 
+/// (11.5c) The order in which sweeps visit a set of constraints: input order below
+/// kColouredSweepPoints points; above, runs of consecutive points of one pair of bodies (a
+/// contact's manifold), coloured so that no colour moves a dynamic body twice. It depends only on
+/// which bodies each constraint joins, so a warm start and the solve after it share one.
+struct SweepSchedule {
+    bool coloured = false;
+    /// Run k is constraints [runStart[k], runStart[k + 1]).
+    std::vector<std::uint32_t> runStart;
+    ConstraintColours colours;
+};
+
+/// The schedule of sweeps over `constraints` (11.5c).
+void scheduleSweeps(std::span<const ContactConstraint> constraints,
+                    std::span<const SolverBody> bodies, SweepSchedule& schedule);
+
 /// Applies the constraints' impulses to their bodies (warm starting, (11.6)).
 /// Like solveConstraints, a large set of points is visited colour by colour, each colour over
 /// `threads` threads, with the same result for any number of them.
 void warmStart(std::span<const ContactConstraint> constraints, std::span<SolverBody> bodies,
                int threads = 1);
+/// warmStart in the order of a schedule made by scheduleSweeps for these constraints.
+void warmStart(std::span<const ContactConstraint> constraints, std::span<SolverBody> bodies,
+               const SweepSchedule& schedule, int threads);
 
 /// Gauss-Seidel sweeps of normal (11.4) then friction (11.5) impulses with accumulated clamping,
 /// until no impulse changes by more than `convergence` times the largest, or no point's velocity
@@ -61,5 +80,9 @@ void warmStart(std::span<const ContactConstraint> constraints, std::span<SolverB
 int solveConstraints(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
                      int iterations, Real convergence, Real velocityTolerance = 0.0,
                      int threads = 1);
+/// solveConstraints in the order of a schedule made by scheduleSweeps for these constraints.
+int solveConstraints(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
+                     const SweepSchedule& schedule, int iterations, Real convergence,
+                     Real velocityTolerance, int threads);
 
 } // namespace tumble

@@ -1,6 +1,8 @@
 // Arrival times of the points of an island still apart (docs/physics/11-island-solver.md).
 #include "step/arrivals.hpp"
 
+#include "parallel_for.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -47,9 +49,11 @@ void gapMotions(std::span<const ContactConstraint> constraints,
     }
 }
 
-bool anyBouncingArrival(std::span<const ContactConstraint> constraints, Real touchingGap)
+bool anyBouncingArrival(std::span<const ContactConstraint> constraints, Real touchingGap,
+                        int threads)
 {
-    return std::any_of(constraints.begin(), constraints.end(), [&](const ContactConstraint& c) {
+    return parallelAnyOf(constraints.size(), threads, [&](std::size_t k) {
+        const ContactConstraint& c = constraints[k];
         return c.separation > touchingGap && c.normalImpulse > 0.0 && c.restitution > 0.0;
     });
 }
@@ -79,12 +83,13 @@ Real earliestArrival(std::span<const ContactConstraint> constraints,
 }
 
 void keepExactArrivals(std::span<ContactConstraint> constraints, std::span<const GapMotion> motions,
-                       Real tau, Real touchingGap)
+                       Real tau, Real touchingGap, int threads)
 {
-    for (std::size_t k = 0; k < constraints.size() && k < motions.size(); ++k) {
+    // each point writes only its own target
+    parallelFor(std::min(constraints.size(), motions.size()), threads, [&](std::size_t k) {
         ContactConstraint& c = constraints[k];
         if (c.separation <= touchingGap) {
-            continue;
+            return;
         }
         const Real v0 = motions[k].startVelocity;
         const Real a = motions[k].acceleration;
@@ -93,7 +98,7 @@ void keepExactArrivals(std::span<ContactConstraint> constraints, std::span<const
             // the free-flight end velocity v0 + a tau: the gap closes exactly as the sub-step ends
             c.targetNormalVelocity = std::min(c.targetNormalVelocity, v0 + a * tau);
         }
-    }
+    });
 }
 
 } // namespace tumble

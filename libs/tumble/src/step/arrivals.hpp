@@ -29,7 +29,7 @@ void gapMotions(std::span<const ContactConstraint> constraints,
 /// Whether the solve stopped a point still apart that bounces (e > 0): only then can a sub-step
 /// be cut (11.8).
 [[nodiscard]] bool anyBouncingArrival(std::span<const ContactConstraint> constraints,
-                                      Real touchingGap);
+                                      Real touchingGap, int threads = 1);
 
 /// (11.8): the earliest arrival within tau of a point still apart whose speculative target
 /// bound, that bounces (e > 0) and approaches faster than the restitution threshold; tau when
@@ -42,6 +42,6 @@ void gapMotions(std::span<const ContactConstraint> constraints,
 /// sub-step was cut at its arrival) may reach its free-flight velocity there, not only its mean
 /// velocity -gap/tau: its target becomes the lower of the two.
 void keepExactArrivals(std::span<ContactConstraint> constraints, std::span<const GapMotion> motions,
-                       Real tau, Real touchingGap);
+                       Real tau, Real touchingGap, int threads = 1);
 
 } // namespace tumble

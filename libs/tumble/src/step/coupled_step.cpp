@@ -44,6 +44,7 @@ struct IslandBuffers {
     std::vector<IslandContact> contacts;
     std::vector<IslandContact> spareContacts;
     std::vector<ContactConstraint> constraints;
+    SweepSchedule schedule;
     BodyConstraintLists constraintsOf;
     std::vector<Real> energies;
     std::vector<Vec3> velocityStart;
@@ -64,7 +65,8 @@ public:
         : m_island(island), m_slots(slots), m_context(context), m_settings(context.settings),
           m_events(events), m_bodies(buffers.bodies), m_contacts(buffers.contacts),
           m_spareContacts(buffers.spareContacts),
-          m_constraints(buffers.constraints), m_constraintsOf(buffers.constraintsOf),
+          m_constraints(buffers.constraints), m_schedule(buffers.schedule),
+          m_constraintsOf(buffers.constraintsOf),
           m_energies(buffers.energies), m_velocityStart(buffers.velocityStart),
           m_angularVelocityStart(buffers.angularVelocityStart), m_gapMotions(buffers.gapMotions)
     {
@@ -99,6 +101,8 @@ private:
     std::vector<IslandContact>& m_contacts;
     std::vector<IslandContact>& m_spareContacts;
     std::vector<ContactConstraint>& m_constraints;
+    /// The order of the sweeps over m_constraints (11.5c), made once a sub-step.
+    SweepSchedule& m_schedule;
     BodyConstraintLists& m_constraintsOf;
     /// Each body's energy now, carried from stage to stage (8.3).
     std::vector<Real>& m_energies;
@@ -170,13 +174,14 @@ void CoupledStep::run(Real dt)
 void CoupledStep::resolveImpacts(Real time)
 {
     const Real touching = m_settings.contactTolerance;
-    bool approaching = false;
     gatherBodies();
-    for (ContactConstraint& c : m_constraints) {
-        const Vec3 velocity = m_bodies[c.bodyB].velocityAt(c.offsetB) -
-                              m_bodies[c.bodyA].velocityAt(c.offsetA);
-        approaching |= c.separation <= touching && glm::dot(c.normal, velocity) < -kImpactSpeed;
-    }
+    const bool approaching =
+        parallelAnyOf(m_constraints.size(), m_context.threads, [&](std::size_t k) {
+            const ContactConstraint& c = m_constraints[k];
+            const Vec3 velocity = m_bodies[c.bodyB].velocityAt(c.offsetB) -
+                                  m_bodies[c.bodyA].velocityAt(c.offsetA);
+            return c.separation <= touching && glm::dot(c.normal, velocity) < -kImpactSpeed;
+        });
     if (!approaching) {
         return;
     }
@@ -261,13 +266,15 @@ void CoupledStep::solveSubstep(Real tau)
                                            m_settings.contactTolerance,
                                            m_settings.restitutionThreshold};
     prepareConstraints(m_constraints, m_bodies, targets, m_context.threads);
-    keepExactArrivals(m_constraints, m_gapMotions, tau, m_settings.contactTolerance);
+    keepExactArrivals(m_constraints, m_gapMotions, tau, m_settings.contactTolerance,
+                      m_context.threads);
     loadWarmStart(m_island, m_slots, m_contacts, m_constraints, tau, m_settings,
                   m_context.threads);
-    warmStart(m_constraints, m_bodies, m_context.threads);
-    countSolve(solveConstraints(m_constraints, m_bodies, m_settings.solverIterations,
-                                kRestingConvergence, restingVelocityTolerance(tau),
-                                m_context.threads));
+    scheduleSweeps(m_constraints, m_bodies, m_schedule);
+    warmStart(m_constraints, m_bodies, m_schedule, m_context.threads);
+    countSolve(solveConstraints(m_constraints, m_bodies, m_schedule,
+                                m_settings.solverIterations, kRestingConvergence,
+                                restingVelocityTolerance(tau), m_context.threads));
 }
 
 Real CoupledStep::earliestArrival(Real tau)
@@ -276,7 +283,7 @@ Real CoupledStep::earliestArrival(Real tau)
     // that arrives fast enough to bounce ends the sub-step when it arrives, so its impact is
     // resolved at contact, before the impacts that come after it
     const Real touching = m_settings.contactTolerance;
-    if (!anyBouncingArrival(m_constraints, touching)) {
+    if (!anyBouncingArrival(m_constraints, touching, m_context.threads)) {
         return tau;
     }
     // the motion without the points still apart: the points in contact solved alone, from the
@@ -308,7 +315,7 @@ void CoupledStep::finishSubstep(Real tau)
         kineticBefore[i] = body(i).kineticEnergy();
     }
     const std::vector<ContactWork> work = shareIslandWork(m_bodies, kineticBefore);
-    m_constraintsOf.build(m_constraints, count);
+    m_constraintsOf.build(m_constraints, count, m_context.threads);
     // each body reads its own constraints and writes only itself
     const auto advance = [&](std::size_t i) {
         Body& b = body(i);
@@ -331,7 +338,8 @@ void CoupledStep::finishSubstep(Real tau)
     for (std::size_t i = 0; i < count; ++i) {
         m_energies[i] = bookCorrection(body(i), m_energies[i], m_settings.gravity);
     }
-    markTouching(m_island, m_slots, m_constraints, m_settings.contactTolerance);
+    markTouching(m_island, m_slots, m_constraints, m_constraintsOf, m_settings.contactTolerance,
+                 m_context.threads);
 }
 
 } // namespace

@@ -196,12 +196,16 @@ void storeWarmStart(const CoupledIsland& island, std::span<BodySlot> slots,
 }
 
 void BodyConstraintLists::build(std::span<const ContactConstraint> constraints,
-                                std::size_t bodyCount)
+                                std::size_t bodyCount, int threads)
 {
+    ends.resize(constraints.size());
+    parallelFor(constraints.size(), threads, [&](std::size_t k) {
+        ends[k] = {constraints[k].bodyA, constraints[k].bodyB};
+    });
     // counting sort by body: each constraint is listed under each dynamic body it touches
     starts.assign(bodyCount + 2, 0);
-    for (const ContactConstraint& c : constraints) {
-        for (const std::uint32_t body : {c.bodyA, c.bodyB}) {
+    for (const auto& bodies : ends) {
+        for (const std::uint32_t body : bodies) {
             if (body < bodyCount) {
                 ++starts[body + 2];
             }
@@ -211,8 +215,8 @@ void BodyConstraintLists::build(std::span<const ContactConstraint> constraints,
         starts[i] += starts[i - 1];
     }
     indices.resize(starts.back());
-    for (std::uint32_t index = 0; index < constraints.size(); ++index) {
-        for (const std::uint32_t body : {constraints[index].bodyA, constraints[index].bodyB}) {
+    for (std::uint32_t index = 0; index < ends.size(); ++index) {
+        for (const std::uint32_t body : ends[index]) {
             if (body < bodyCount) {
                 indices[starts[body + 1]++] = index;
             }
@@ -317,23 +321,17 @@ void pushOutOfPenetration(const CoupledIsland& island, std::span<BodySlot> slots
 }
 
 void markTouching(const CoupledIsland& island, std::span<BodySlot> slots,
-                  std::span<const ContactConstraint> constraints, Real tolerance)
+                  std::span<const ContactConstraint> constraints,
+                  const BodyConstraintLists& constraintsOf, Real tolerance, int threads)
 {
-    const std::size_t count = island.bodies.size();
-    for (const std::uint32_t slot : island.bodies) {
-        slots[slot].touchingGround = false;
-    }
-    for (const ContactConstraint& c : constraints) {
-        if (c.separation > tolerance && c.normalImpulse <= 0.0) {
-            continue;
-        }
-        if (c.bodyA < count) {
-            slots[island.bodies[c.bodyA]].touchingGround = true;
-        }
-        if (c.bodyB < count) {
-            slots[island.bodies[c.bodyB]].touchingGround = true;
-        }
-    }
+    parallelFor(island.bodies.size(), threads, [&](std::size_t i) {
+        const std::span<const std::uint32_t> own = constraintsOf.of(i);
+        slots[island.bodies[i]].touchingGround =
+            std::any_of(own.begin(), own.end(), [&](const std::uint32_t k) {
+                return constraints[k].separation <= tolerance ||
+                       constraints[k].normalImpulse > 0.0;
+            });
+    });
 }
 
 } // namespace tumble

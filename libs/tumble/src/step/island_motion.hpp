@@ -7,6 +7,7 @@
 #include "step/coupled_step.hpp"
 #include "step/island_contacts.hpp"
 
+#include <array>
 #include <span>
 #include <vector>
 
@@ -31,8 +32,11 @@ void storeWarmStart(const CoupledIsland& island, std::span<BodySlot> slots,
 struct BodyConstraintLists {
     std::vector<std::uint32_t> starts;
     std::vector<std::uint32_t> indices;
+    /// The bodies of each constraint, gathered over the threads so the sort reads them packed.
+    std::vector<std::array<std::uint32_t, 2>> ends;
 
-    void build(std::span<const ContactConstraint> constraints, std::size_t bodyCount);
+    void build(std::span<const ContactConstraint> constraints, std::size_t bodyCount,
+               int threads = 1);
     [[nodiscard]] std::span<const std::uint32_t> of(std::size_t body) const
     {
         return {indices.data() + starts[body], indices.data() + starts[body + 1]};
@@ -55,8 +59,11 @@ void pushOutOfPenetration(const CoupledIsland& island, std::span<BodySlot> slots
                           std::span<const ContactConstraint> constraints, Real tau,
                           const WorldSettings& settings, int threads = 1);
 
-/// Marks the island's bodies that end the sub-step in contact with anything.
+/// Marks the island's bodies that end the sub-step in contact with anything: those with a
+/// point in contact or one that pushed. Each body reads its own constraints, spread over
+/// `threads`.
 void markTouching(const CoupledIsland& island, std::span<BodySlot> slots,
-                  std::span<const ContactConstraint> constraints, Real tolerance);
+                  std::span<const ContactConstraint> constraints,
+                  const BodyConstraintLists& constraintsOf, Real tolerance, int threads = 1);
 
 } // namespace tumble
