@@ -77,6 +77,19 @@ TEST(BroadPhase, MatchesAllPairsOnRandomBoxes)
     }
 }
 
+TEST(BroadPhase, ASweepSharedBetweenThreadsFindsEveryPairOnce)
+{
+    // 1500 boxes give two threads shares of 128 boxes; the pairs must be those of all pairs
+    std::mt19937 random(777);
+    for (const Real largest : {0.2, 1.0, 3.0}) {
+        const auto proxies = randomProxies(random, 1500, 30.0, largest, 5);
+        BroadPhase shared;
+        shared.update(proxies, 2);
+        const std::vector<ProxyPair> pairs(shared.pairs().begin(), shared.pairs().end());
+        EXPECT_EQ(pairs, allOverlappingPairs(proxies)) << "boxes up to " << largest;
+    }
+}
+
 TEST(BroadPhase, StaticBoxesPairOnlyWithMovableOnes)
 {
     std::vector<BroadPhaseProxy> proxies(3);
