@@ -103,6 +103,38 @@ TEST(EnergyLedger, ElasticFrictionlessBouncesRemoveNothing)
     EXPECT_LT(std::abs(ledger.removed()), 1e-6 * scale);
 }
 
+TEST(EnergyLedger, AHeadOnImpactOfTwoCubesBooksWhatTheStruckCubeGainsAsExchanged)
+{
+    // Equal masses m, e = 0.5, B at v on A at rest, face on, no gravity: A leaves at (1 + e) v / 2
+    // and B at (1 - e) v / 2. The pair loses m v^2 (1 - e^2) / 4 (8.2), all of it booked on B,
+    // which alone moved before (8.4); A's kinetic energy came from B, so A books it as exchanged
+    // and B the same amount with the opposite sign (docs/physics/11-island-solver.md, Energy).
+    World world(WorldSettings{.gravity = Vec3(0.0)});
+    const Real m = 2.0;
+    const Real v = 2.0;
+    const Real e = 0.5;
+    const Material material{.restitution = e, .friction = 0.5};
+    const BodyId struck =
+        world.createBody(BodyDef{.mass = m, .position = Vec3(0, 5, 0), .material = material});
+    const BodyId striker = world.createBody(BodyDef{.mass = m, .position = Vec3(-3, 5, 0),
+                                                    .linearVelocity = Vec3(v, 0, 0),
+                                                    .material = material});
+    testing::simulate(world, 1.0, 1.0 / 240.0);
+    const Real scale = 0.5 * m * v * v;
+    EXPECT_NEAR(world.body(struck).linearVelocity.x, 0.5 * (1 + e) * v, 1e-9);
+    EXPECT_NEAR(world.body(striker).linearVelocity.x, 0.5 * (1 - e) * v, 1e-9);
+    const EnergyLedger& a = world.body(struck).ledger;
+    const EnergyLedger& b = world.body(striker).ledger;
+    const Real gained = 0.5 * m * std::pow(0.5 * (1 + e) * v, 2);
+    EXPECT_NEAR(a.exchanged, gained, 1e-9 * scale);
+    EXPECT_NEAR(b.exchanged, -gained, 1e-9 * scale);
+    EXPECT_NEAR(a.removedByNormal, 0.0, 1e-9 * scale);
+    EXPECT_NEAR(b.removedByNormal, 0.25 * m * v * v * (1 - e * e), 1e-9 * scale);
+    EXPECT_NEAR(a.removedByFriction + b.removedByFriction, 0.0, 1e-9 * scale);
+    EXPECT_LT(imbalance(world, struck, scale), 1e-9);
+    EXPECT_LT(imbalance(world, striker, scale), 1e-9);
+}
+
 TEST(EnergyLedger, ContactRecordsDescribeEachSolve)
 {
     World world = testing::worldWithGround(WorldSettings{.recordContacts = true});

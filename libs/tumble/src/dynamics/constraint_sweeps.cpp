@@ -188,7 +188,7 @@ int solveConstraints(std::span<ContactConstraint> constraints, std::span<SolverB
     return iterations;
 }
 
-void warmStart(std::span<const ContactConstraint> constraints, std::span<SolverBody> bodies,
+void warmStart(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
                int threads)
 {
     SweepSchedule schedule;
@@ -196,18 +196,18 @@ void warmStart(std::span<const ContactConstraint> constraints, std::span<SolverB
     warmStart(constraints, bodies, schedule, threads);
 }
 
-void warmStart(std::span<const ContactConstraint> constraints, std::span<SolverBody> bodies,
+void warmStart(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
                const SweepSchedule& schedule, int threads)
 {
     if (!schedule.coloured) {
-        for (const ContactConstraint& c : constraints) {
+        for (ContactConstraint& c : constraints) {
             warmStartPoint(c, bodies[c.bodyA], bodies[c.bodyB]);
         }
         return;
     }
     // in the order of the sweeps (11.5c), each colour over the threads
     colouredPass(schedule, constraints, bodies, threads,
-                 [](const ContactConstraint& c, SolverBody& a, SolverBody& b, SweepMaxima&) {
+                 [](ContactConstraint& c, SolverBody& a, SolverBody& b, SweepMaxima&) {
                      warmStartPoint(c, a, b);
                  });
 }

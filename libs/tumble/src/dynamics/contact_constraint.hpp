@@ -17,10 +17,6 @@ struct SolverBody {
     Vec3 angularVelocity{0.0};
     Real invMass = 0.0;
     Mat3 invInertiaWorld{0.0};
-    /// Work of the normal and the friction impulses on this body in the current solve, J
-    /// (08-energy-ledger.md, (8.2)).
-    Real normalWork = 0.0;
-    Real frictionWork = 0.0;
 
     [[nodiscard]] Vec3 velocityAt(const Vec3& offset) const
     {
@@ -77,6 +73,11 @@ struct ContactConstraint {
     Real tangentImpulse2 = 0.0;
     /// Where the friction step's Newton iteration (6.4) starts: last sweep's shift.
     Real frictionShift = 0.0;
+    /// Work of this point's normal and friction impulses on its two bodies since the
+    /// constraint was prepared (warm start and sweeps), J: each step's P . (u_before +
+    /// u_after) / 2 with u the relative velocity (08-energy-ledger.md, (8.2)).
+    Real normalWork = 0.0;
+    Real frictionWork = 0.0;
     RestitutionState restitutionState = RestitutionState::None;
 };
 

@@ -1,7 +1,19 @@
 // Energy booking per stage (docs/physics/08-energy-ledger.md).
 #include "dynamics/energy_booking.hpp"
 
+#include "parallel_for.hpp"
+
+#include <algorithm>
+
 namespace tumble {
+
+namespace {
+
+/// The points of one group of sumPointWork; a fixed size, so the grouping does not depend on
+/// the threads.
+constexpr std::size_t kPointsPerWorkGroup = 4096;
+
+} // namespace
 
 void bookContact(Body& body, const ContactWork& work, Real energyChange, bool impact)
 {
@@ -22,17 +34,40 @@ Real bookCorrection(Body& body, Real energyBefore, const Vec3& gravity)
     return energyAfter;
 }
 
-std::vector<ContactWork> shareIslandWork(std::span<const SolverBody> bodies,
-                                         std::span<const Real> kineticBefore)
+Real kineticEnergyWith(const Body& body, const Vec3& linear, const Vec3& angular)
+{
+    const Vec3 bodySpin = glm::conjugate(body.orientation) * angular;
+    return 0.5 * body.mass * lengthSquared(linear) +
+           0.5 * glm::dot(body.inertiaBody() * bodySpin, bodySpin);
+}
+
+IslandWork sumPointWork(std::span<const ContactConstraint> constraints, int threads)
+{
+    const std::size_t groups = (constraints.size() + kPointsPerWorkGroup - 1) / kPointsPerWorkGroup;
+    std::vector<IslandWork> groupWork(groups);
+    parallelFor(groups, threads, [&](std::size_t g) {
+        const std::size_t end = std::min(constraints.size(), (g + 1) * kPointsPerWorkGroup);
+        for (std::size_t k = g * kPointsPerWorkGroup; k < end; ++k) {
+            groupWork[g].normal += constraints[k].normalWork;
+            groupWork[g].friction += constraints[k].frictionWork;
+        }
+    });
+    IslandWork total;
+    for (const IslandWork& work : groupWork) {
+        total.normal += work.normal;
+        total.friction += work.friction;
+    }
+    return total;
+}
+
+std::vector<ContactWork> shareIslandWork(const IslandWork& total, std::span<const Real> bodyWork,
+                                         std::span<const Real> kineticBefore,
+                                         std::span<const SolverBody> bodies)
 {
     const std::size_t count = kineticBefore.size();
-    Real normal = 0.0;
-    Real friction = 0.0;
     Real kinetic = 0.0;
     Real mass = 0.0;
     for (std::size_t i = 0; i < count; ++i) {
-        normal += bodies[i].normalWork;
-        friction += bodies[i].frictionWork;
         kinetic += kineticBefore[i];
         mass += 1.0 / bodies[i].invMass;
     }
@@ -40,10 +75,9 @@ std::vector<ContactWork> shareIslandWork(std::span<const SolverBody> bodies,
     for (std::size_t i = 0; i < count; ++i) {
         const Real share = kinetic > 0.0 ? kineticBefore[i] / kinetic
                                          : (1.0 / bodies[i].invMass) / mass;
-        work[i].normal = share * normal;
-        work[i].friction = share * friction;
-        work[i].exchanged =
-            bodies[i].normalWork + bodies[i].frictionWork - work[i].normal - work[i].friction;
+        work[i].normal = share * total.normal;
+        work[i].friction = share * total.friction;
+        work[i].exchanged = bodyWork[i] - work[i].normal - work[i].friction;
     }
     return work;
 }

@@ -26,10 +26,26 @@ void bookContact(Body& body, const ContactWork& work, Real energyChange, bool im
 /// energy after it.
 Real bookCorrection(Body& body, Real energyBefore, const Vec3& gravity);
 
+/// The kinetic energy `body` would have with velocities `linear` and `angular`, J.
+Real kineticEnergyWith(const Body& body, const Vec3& linear, const Vec3& angular);
+
+/// Work of an island's contact impulses in one stage, J: the totals of its points' normal and
+/// friction work (8.2).
+struct IslandWork {
+    Real normal = 0.0;
+    Real friction = 0.0;
+};
+
+/// The points' work summed in fixed groups of consecutive points, the groups spread over
+/// `threads` and added in order, so the total is the same for any number of threads.
+IslandWork sumPointWork(std::span<const ContactConstraint> constraints, int threads = 1);
+
 /// (8.4): the island's total work of the normal and of the friction impulses, shared among its
 /// bodies in proportion to their kinetic energy before the stage (their mass when all are at
-/// rest); what a body received beyond its share is exchanged, and the exchanges sum to zero.
-std::vector<ContactWork> shareIslandWork(std::span<const SolverBody> bodies,
-                                         std::span<const Real> kineticBefore);
+/// rest); what a body received beyond its share, `bodyWork` (the change of its kinetic energy
+/// the impulses made) less the share, is exchanged, and the exchanges sum to zero.
+std::vector<ContactWork> shareIslandWork(const IslandWork& total, std::span<const Real> bodyWork,
+                                         std::span<const Real> kineticBefore,
+                                         std::span<const SolverBody> bodies);
 
 } // namespace tumble

@@ -72,6 +72,8 @@ void prepareConstraint(ContactConstraint& c, std::span<const SolverBody> bodies,
     c.friction = sticking ? c.staticFriction : c.kineticFriction;
     c.restitutionState = RestitutionState::None;
     c.targetNormalVelocity = 0.0;
+    c.normalWork = 0.0;
+    c.frictionWork = 0.0;
     if (settings.target == ConstraintTarget::Substep) {
         // (11.4): a point still apart may close its gap within the sub-step, not cross it
         if (c.separation > settings.touchingGap) {

@@ -34,7 +34,8 @@ struct ConstraintTargetSettings {
 };
 
 /// Effective masses (11.2), (11.3), tangent basis, friction coefficient and target (11.4) of a
-/// constraint whose bodies, normal, offsets, gap and material are set. Keeps its impulses.
+/// constraint whose bodies, normal, offsets, gap and material are set. Keeps its impulses and
+/// starts its work (8.2) from zero.
 void prepareConstraint(ContactConstraint& constraint, std::span<const SolverBody> bodies,
                        const ConstraintTargetSettings& settings);
 
@@ -66,10 +67,10 @@ void scheduleSweeps(std::span<const ContactConstraint> constraints,
 /// Applies the constraints' impulses to their bodies (warm starting, (11.6)).
 /// Like solveConstraints, a large set of points is visited colour by colour, each colour over
 /// `threads` threads, with the same result for any number of them.
-void warmStart(std::span<const ContactConstraint> constraints, std::span<SolverBody> bodies,
+void warmStart(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
                int threads = 1);
 /// warmStart in the order of a schedule made by scheduleSweeps for these constraints.
-void warmStart(std::span<const ContactConstraint> constraints, std::span<SolverBody> bodies,
+void warmStart(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
                const SweepSchedule& schedule, int threads);
 
 /// Gauss-Seidel sweeps of normal (11.4) then friction (11.5) impulses with accumulated clamping,

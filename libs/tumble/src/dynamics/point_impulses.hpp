@@ -34,71 +34,49 @@ inline void applyAlong(const ContactConstraint& c, SolverBody& a, SolverBody& b,
 }
 
 /// The normal step of one point: impulse change `change` along n, from point velocities vA and
-/// vB along n before it. Books its work on each body, P . (u_before + u_after) / 2 (8.2), with
-/// u_after . n = u_before . n -+ change kA or kB.
-inline void applyNormal(const ContactConstraint& c, SolverBody& a, SolverBody& b, Real change,
-                        Real vA, Real vB)
+/// vB along n before it. Books its work on the pair, P . (u_before + u_after) / 2 (8.2), with
+/// u = vB - vA and u_after = u_before + change (kA + kB).
+inline void applyNormal(ContactConstraint& c, SolverBody& a, SolverBody& b, Real change, Real vA,
+                        Real vB)
 {
     applyAlong(c, a, b, c.normal, 0, change);
-    if (!isFixed(a)) {
-        a.normalWork -= change * (vA - 0.5 * change * c.normalKA);
-    }
-    if (!isFixed(b)) {
-        b.normalWork += change * (vB + 0.5 * change * c.normalKB);
-    }
+    c.normalWork += change * (vB - vA + 0.5 * change * (c.normalKA + c.normalKB));
 }
 
 /// The friction step of one point: impulse change (change1, change2) along t1, t2, from point
-/// velocities along t1, t2 before it (A's, then B's); its work as in applyNormal with each
-/// body's 2x2 part of K_t.
-inline void applyFriction(const ContactConstraint& c, SolverBody& a, SolverBody& b, Real change1,
+/// velocities along t1, t2 before it (A's, then B's); its work on the pair as in applyNormal
+/// with the pair's 2x2 K_t.
+inline void applyFriction(ContactConstraint& c, SolverBody& a, SolverBody& b, Real change1,
                           Real change2, const std::array<Real, 4>& velocities)
 {
     applyAlong(c, a, b, c.tangent1, 1, change1);
     applyAlong(c, a, b, c.tangent2, 2, change2);
-    const auto halfResponse = [&](const std::array<Real, 3>& k, Real& along1, Real& along2) {
-        along1 = 0.5 * (k[0] * change1 + k[1] * change2);
-        along2 = 0.5 * (k[1] * change1 + k[2] * change2);
-    };
-    if (!isFixed(a)) {
-        Real a1 = 0.0;
-        Real a2 = 0.0;
-        halfResponse(c.tangentKA, a1, a2);
-        a.frictionWork -= change1 * (velocities[0] - a1) + change2 * (velocities[1] - a2);
-    }
-    if (!isFixed(b)) {
-        Real b1 = 0.0;
-        Real b2 = 0.0;
-        halfResponse(c.tangentKB, b1, b2);
-        b.frictionWork += change1 * (velocities[2] + b1) + change2 * (velocities[3] + b2);
-    }
+    const Real along1 = velocities[2] - velocities[0] +
+                        0.5 * (c.tangentK[0] * change1 + c.tangentK[1] * change2);
+    const Real along2 = velocities[3] - velocities[1] +
+                        0.5 * (c.tangentK[2] * change1 + c.tangentK[3] * change2);
+    c.frictionWork += change1 * along1 + change2 * along2;
 }
 
-/// Applies a point's whole cached impulse (warm starting, (11.6)); its work is booked under the
-/// normal heading as one impulse, P . (u_before + u_after) / 2 (8.2).
-inline void warmStartPoint(const ContactConstraint& c, SolverBody& a, SolverBody& b)
+/// Applies a point's whole cached impulse (warm starting, (11.6)); its work on the pair is
+/// booked under the normal heading as one impulse, P . (u_before + u_after) / 2 (8.2).
+inline void warmStartPoint(ContactConstraint& c, SolverBody& a, SolverBody& b)
 {
     const std::array<Vec3, 3> directions{c.normal, c.tangent1, c.tangent2};
     const std::array<Real, 3> impulses{c.normalImpulse, c.tangentImpulse1, c.tangentImpulse2};
-    Real workA = 0.0;
-    Real workB = 0.0;
-    for (int axis = 0; axis < 3; ++axis) {
-        workA -= impulses[axis] * pointVelocityAlong(a, directions[axis], c.angularA[axis]);
-        workB += impulses[axis] * pointVelocityAlong(b, directions[axis], c.angularB[axis]);
-    }
+    const auto relativeWork = [&] {
+        Real work = 0.0;
+        for (int axis = 0; axis < 3; ++axis) {
+            work += impulses[axis] * (pointVelocityAlong(b, directions[axis], c.angularB[axis]) -
+                                      pointVelocityAlong(a, directions[axis], c.angularA[axis]));
+        }
+        return work;
+    };
+    const Real before = relativeWork();
     for (int axis = 0; axis < 3; ++axis) {
         applyAlong(c, a, b, directions[axis], axis, impulses[axis]);
     }
-    for (int axis = 0; axis < 3; ++axis) {
-        workA -= impulses[axis] * pointVelocityAlong(a, directions[axis], c.angularA[axis]);
-        workB += impulses[axis] * pointVelocityAlong(b, directions[axis], c.angularB[axis]);
-    }
-    if (!isFixed(a)) {
-        a.normalWork += 0.5 * workA;
-    }
-    if (!isFixed(b)) {
-        b.normalWork += 0.5 * workB;
-    }
+    c.normalWork += 0.5 * (before + relativeWork());
 }
 
 } // namespace tumble

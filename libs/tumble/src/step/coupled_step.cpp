@@ -86,6 +86,18 @@ private:
     {
         return kRestingVelocityShare * glm::length(m_settings.gravity) * tau;
     }
+    /// Each body's kinetic energy in m_bodies less `kineticStart`: the work the contact
+    /// impulses did on it since the solve started (8.2).
+    [[nodiscard]] std::vector<Real> bodyWork(std::span<const Real> kineticStart)
+    {
+        std::vector<Real> work(kineticStart.size());
+        parallelFor(work.size(), m_context.threads, [&](std::size_t i) {
+            work[i] = kineticEnergyWith(body(i), m_bodies[i].linearVelocity,
+                                        m_bodies[i].angularVelocity) -
+                      kineticStart[i];
+        });
+        return work;
+    }
     void countSolve(int sweeps)
     {
         ++m_events.statistics.solves;
@@ -203,6 +215,8 @@ void CoupledStep::resolveImpacts(Real time)
             c.tangentImpulse1 = 0.0;
             c.tangentImpulse2 = 0.0;
             c.frictionShift = 0.0;
+            c.normalWork = 0.0;
+            c.frictionWork = 0.0;
         }
         countSolve(solveConstraints(correction, m_bodies, m_settings.solverIterations,
                                     kImpactConvergence, 0.0, m_context.threads));
@@ -210,9 +224,13 @@ void CoupledStep::resolveImpacts(Real time)
             impact[k].normalImpulse += correction[k].normalImpulse;
             impact[k].tangentImpulse1 += correction[k].tangentImpulse1;
             impact[k].tangentImpulse2 += correction[k].tangentImpulse2;
+            impact[k].normalWork += correction[k].normalWork;
+            impact[k].frictionWork += correction[k].frictionWork;
         }
     }
-    const std::vector<ContactWork> work = shareIslandWork(m_bodies, kineticBefore);
+    const std::vector<ContactWork> work =
+        shareIslandWork(sumPointWork(impact, m_context.threads), bodyWork(kineticBefore),
+                        kineticBefore, m_bodies);
     for (std::size_t i = 0; i < m_island.bodies.size(); ++i) {
         Body& b = body(i);
         b.linearVelocity = m_bodies[i].linearVelocity;
@@ -314,7 +332,17 @@ void CoupledStep::finishSubstep(Real tau)
     for (std::size_t i = 0; i < count; ++i) {
         kineticBefore[i] = body(i).kineticEnergy();
     }
-    const std::vector<ContactWork> work = shareIslandWork(m_bodies, kineticBefore);
+    // the impulses' work on each body: its kinetic energy now less at the solve's start, after
+    // gravity's push over the sub-step (2.2)
+    std::vector<Real> kineticStart(count);
+    parallelFor(count, m_context.threads, [&](std::size_t i) {
+        kineticStart[i] =
+            kineticEnergyWith(body(i), m_velocityStart[i] + m_settings.gravity * tau,
+                              m_angularVelocityStart[i]);
+    });
+    const std::vector<ContactWork> work =
+        shareIslandWork(sumPointWork(m_constraints, m_context.threads), bodyWork(kineticStart),
+                        kineticBefore, m_bodies);
     m_constraintsOf.build(m_constraints, count, m_context.threads);
     // each body reads its own constraints and writes only itself
     const auto advance = [&](std::size_t i) {
