@@ -39,13 +39,16 @@ struct BenchTables {
     std::vector<std::string> peerSettings;
 };
 
-/// The overrides every scenario gets: the simulated time, when --duration is given.
-std::vector<std::string> durationOverrides(const BenchOptions& options)
+/// The overrides every scenario gets: the simulated time, when --duration is given, then those
+/// of --set.
+std::vector<std::string> sceneOverrides(const BenchOptions& options)
 {
-    if (options.duration <= 0.0) {
-        return {};
+    std::vector<std::string> overrides;
+    if (options.duration > 0.0) {
+        overrides.push_back("world.duration=" + formatFull(options.duration));
     }
-    return {"world.duration=" + formatFull(options.duration)};
+    overrides.insert(overrides.end(), options.overrides.begin(), options.overrides.end());
+    return overrides;
 }
 
 /// tumble's ns per body-step on one thread (or the first thread count timed) among
@@ -143,7 +146,7 @@ bool wanted(const BenchOptions& options, const std::string& scene)
 BenchTables runScenes(const BenchOptions& options)
 {
     BenchTables tables;
-    const std::vector<std::string> overrides = durationOverrides(options);
+    const std::vector<std::string> overrides = sceneOverrides(options);
     const auto load = [&](const std::string& path, std::vector<std::string> extra = {}) {
         extra.insert(extra.begin(), overrides.begin(), overrides.end());
         return scenario::loadScenario(path, extra);
@@ -190,6 +193,10 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options)
     command->add_option("--duration", options.duration,
                         "Simulated time of each scenario, s (default: each file's own)")
         ->check(positiveNumber());
+    command->add_option("--set", options.overrides,
+                        "Override a value of every scenario timed, KEY=VALUE "
+                        "(world.solver_iterations=10); repeatable")
+        ->type_name("KEY=VALUE");
     command->add_flag("--peers", options.peers,
                       "Also run Bullet, ODE and MuJoCo (those built in) on the same bodies");
     command->add_option("--throws", options.throws,
@@ -215,6 +222,9 @@ int benchCommand(const BenchOptions& options)
         return kExitBadInput;
     }
 #endif
+    for (const std::string& override : options.overrides) {
+        std::printf("every scenario with --set %s\n", override.c_str());
+    }
     const BenchTables tables = runScenes(options);
     if (!tables.independent.empty()) {
         printRows(tables.independent);

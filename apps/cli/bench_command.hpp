@@ -25,6 +25,9 @@ struct BenchOptions {
     long throws = 10000;
     /// Also run the peer engines compiled in (TUMBLE_BUILD_PEERS).
     bool peers = false;
+    /// "KEY=VALUE" overrides every scenario of the run gets (--set), after --duration's, so they
+    /// win: world.solver_iterations=10 times tumble at a peer's sweep budget.
+    std::vector<std::string> overrides;
     /// Folder holding part3_task4_friction.toml (S1), s4_tumbling_cuboids.toml (S4),
     /// pile_100.toml (S5), stack_20.toml and dice_cube.toml (the dice throughput).
     std::string scenarioDir;

@@ -119,6 +119,31 @@ TEST(CliBench, ContactScenesPrintEveryColumnWithFiniteNumbers)
     }
 }
 
+TEST(CliBench, SetOverridesEveryScenarioTimed)
+{
+    // the stack's own step is 1/60 s: 0.05 s of it is 3 steps, and 10 at the step --set gives
+    const Result result =
+        runTumble({"bench", "--scenes", "stack20", "--duration", "0.05", "--threads", "1",
+                   "--throws", "0", "--set", "world.dt=0.005"});
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_NE(result.output.find("every scenario with --set world.dt=0.005"), std::string::npos)
+        << result.output;
+    const std::vector<ContactRow> rows = contactRows(result.output);
+    ASSERT_FALSE(rows.empty()) << result.output;
+    for (const ContactRow& row : rows) {
+        EXPECT_EQ(row.steps, 10) << row.engine;
+    }
+}
+
+TEST(CliBench, AnUnknownKeyInSetIsNamedInAOneLineError)
+{
+    const Result result = runTumble({"bench", "--scenes", "stack20", "--duration", "0.05",
+                                     "--throws", "0", "--set", "world.sweeps=10"});
+    EXPECT_EQ(result.exitCode, 2) << result.output;
+    EXPECT_NE(result.output.find("world.sweeps"), std::string::npos) << result.output;
+    EXPECT_EQ(result.output.find("ms/step"), std::string::npos) << result.output;
+}
+
 TEST(CliBench, AnUnknownSceneIsAUsageError)
 {
     const Result result = runTumble({"bench", "--scenes", "S9"});
