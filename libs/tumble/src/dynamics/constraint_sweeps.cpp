@@ -212,13 +212,13 @@ void warmStart(std::span<ContactConstraint> constraints, std::span<SolverBody> b
                  });
 }
 
-void prepareConstraints(std::span<ContactConstraint> constraints,
-                        std::span<const SolverBody> bodies,
-                        const ConstraintTargetSettings& settings, int threads)
+void prepareConstraintTargets(std::span<ContactConstraint> constraints,
+                              std::span<const SolverBody> bodies,
+                              const ConstraintTargetSettings& settings, int threads)
 {
     // each constraint reads the bodies and writes only itself
     parallelFor(constraints.size(), constraints.size() >= kColouredSweepPoints ? threads : 1,
-                [&](std::size_t i) { prepareConstraint(constraints[i], bodies, settings); });
+                [&](std::size_t i) { prepareConstraintTargets(constraints[i], bodies, settings); });
 }
 
 } // namespace tumble

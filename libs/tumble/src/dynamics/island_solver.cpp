@@ -20,10 +20,11 @@ Vec3 relativeVelocity(const ContactConstraint& c, const SolverBody& a, const Sol
     return b.velocityAt(c.offsetB) - a.velocityAt(c.offsetA);
 }
 
-/// The Jacobian rows, each body's part of K and its inverse masses along n, t1, t2 (11.2),
-/// (11.3), for the constraint's normal, tangents and offsets.
-void prepareJacobians(ContactConstraint& c, const SolverBody& a, const SolverBody& b)
+} // namespace
+
+void prepareConstraintGeometry(ContactConstraint& c, const SolverBody& a, const SolverBody& b)
 {
+    orthonormalBasis(c.normal, c.tangent1, c.tangent2);
     const std::array<Vec3, 3> directions{c.normal, c.tangent1, c.tangent2};
     for (int axis = 0; axis < 3; ++axis) {
         c.angularA[axis] = glm::cross(c.offsetA, directions[axis]);
@@ -54,15 +55,11 @@ void prepareJacobians(ContactConstraint& c, const SolverBody& a, const SolverBod
                      k11 * invDeterminant};
 }
 
-} // namespace
-
-void prepareConstraint(ContactConstraint& c, std::span<const SolverBody> bodies,
-                       const ConstraintTargetSettings& settings)
+void prepareConstraintTargets(ContactConstraint& c, std::span<const SolverBody> bodies,
+                              const ConstraintTargetSettings& settings)
 {
     const SolverBody& a = bodies[c.bodyA];
     const SolverBody& b = bodies[c.bodyB];
-    orthonormalBasis(c.normal, c.tangent1, c.tangent2);
-    prepareJacobians(c, a, b);
     const Vec3 velocity = relativeVelocity(c, a, b);
     const Real normalVelocity = glm::dot(c.normal, velocity);
     c.velocityBefore = velocity;
@@ -88,6 +85,13 @@ void prepareConstraint(ContactConstraint& c, std::span<const SolverBody> bodies,
     } else if (normalVelocity < 0.0 && c.restitution > 0.0) {
         c.restitutionState = RestitutionState::Suppressed;
     }
+}
+
+void prepareConstraint(ContactConstraint& c, std::span<const SolverBody> bodies,
+                       const ConstraintTargetSettings& settings)
+{
+    prepareConstraintGeometry(c, bodies[c.bodyA], bodies[c.bodyB]);
+    prepareConstraintTargets(c, bodies, settings);
 }
 
 bool applyRestitution(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies)

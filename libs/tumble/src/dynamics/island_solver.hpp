@@ -33,16 +33,27 @@ struct ConstraintTargetSettings {
     Real restitutionThreshold = 0.05;
 };
 
-/// Effective masses (11.2), (11.3), tangent basis, friction coefficient and target (11.4) of a
-/// constraint whose bodies, normal, offsets, gap and material are set. Keeps its impulses and
-/// starts its work (8.2) from zero.
+/// The tangent basis, Jacobian rows and effective masses (11.2), (11.3) of a constraint whose
+/// normal and offsets are set, between bodies a and b: what depends on the geometry and the
+/// inverse inertias only, so it holds for every solve until the bodies move.
+void prepareConstraintGeometry(ContactConstraint& constraint, const SolverBody& a,
+                               const SolverBody& b);
+
+/// The velocity before the solve, friction coefficient (6.2) and target (11.4) of a constraint
+/// whose geometry is prepared, from the bodies' velocities now. Keeps its impulses and starts
+/// its work (8.2) from zero.
+void prepareConstraintTargets(ContactConstraint& constraint, std::span<const SolverBody> bodies,
+                              const ConstraintTargetSettings& settings);
+
+/// prepareConstraintGeometry then prepareConstraintTargets, for a constraint whose bodies,
+/// normal, offsets, gap and material are set.
 void prepareConstraint(ContactConstraint& constraint, std::span<const SolverBody> bodies,
                        const ConstraintTargetSettings& settings);
 
-/// prepareConstraint for each constraint, those of a large island spread over `threads`.
-void prepareConstraints(std::span<ContactConstraint> constraints,
-                        std::span<const SolverBody> bodies,
-                        const ConstraintTargetSettings& settings, int threads);
+/// prepareConstraintTargets for each constraint, those of a large island spread over `threads`.
+void prepareConstraintTargets(std::span<ContactConstraint> constraints,
+                              std::span<const SolverBody> bodies,
+                              const ConstraintTargetSettings& settings, int threads);
 
 /// (11.4a) Poisson's restitution after a compression solve: each point whose approach was fast
 /// enough gets e times its compression impulse more, along the normal. Returns whether any

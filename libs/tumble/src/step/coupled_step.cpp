@@ -259,9 +259,9 @@ std::vector<ContactConstraint> CoupledStep::impactConstraints() const
     for (const ContactConstraint& c : m_constraints) {
         if (c.separation <= touching) {
             ContactConstraint& prepared = impact.emplace_back(c);
-            prepareConstraint(prepared, m_bodies,
-                              {ConstraintTarget::Impact, 0.0, touching,
-                               m_settings.restitutionThreshold});
+            prepareConstraintTargets(prepared, m_bodies,
+                                     {ConstraintTarget::Impact, 0.0, touching,
+                                      m_settings.restitutionThreshold});
             prepared.targetNormalVelocity = 0.0;
         }
     }
@@ -283,7 +283,7 @@ void CoupledStep::solveSubstep(Real tau)
     const ConstraintTargetSettings targets{ConstraintTarget::Substep, tau,
                                            m_settings.contactTolerance,
                                            m_settings.restitutionThreshold};
-    prepareConstraints(m_constraints, m_bodies, targets, m_context.threads);
+    prepareConstraintTargets(m_constraints, m_bodies, targets, m_context.threads);
     keepExactArrivals(m_constraints, m_gapMotions, tau, m_settings.contactTolerance,
                       m_context.threads);
     loadWarmStart(m_island, m_slots, m_contacts, m_constraints, tau, m_settings,

@@ -3,6 +3,7 @@
 
 #include "collision/collide_cuboid_cuboid.hpp"
 #include "collision/collide_cuboid_half_space.hpp"
+#include "dynamics/island_solver.hpp"
 #include "parallel_for.hpp"
 #include "step/owner_groups.hpp"
 
@@ -246,9 +247,22 @@ void buildConstraints(std::span<IslandContact> contacts, std::span<const BodySlo
         points += static_cast<std::uint32_t>(contact.manifold.pointCount);
     }
     constraints.resize(points);
-    // each contact writes only its own constraints
+    // the solver's view of a side's mass: zero inverses for the static side (gathered so by
+    // the step's solver bodies too)
+    const auto solverBodyOf = [&](std::uint32_t solver) {
+        SolverBody body;
+        if (solver != staticIndex) {
+            const Body& b = slots[island.bodies[solver]].body;
+            body.invMass = b.invMass;
+            body.invInertiaWorld = b.invInertiaWorld;
+        }
+        return body;
+    };
+    // each contact writes only its own constraints, geometry prepared while they are at hand
     parallelFor(contacts.size(), threads, [&](std::size_t index) {
         const IslandContact& contact = contacts[index];
+        const SolverBody a = solverBodyOf(contact.solverA);
+        const SolverBody b = solverBodyOf(contact.solverB);
         for (int k = 0; k < contact.manifold.pointCount; ++k) {
             const PairContactPoint& point = contact.manifold.points[k];
             ContactConstraint& c = constraints[contact.firstConstraint + k];
@@ -264,6 +278,7 @@ void buildConstraints(std::span<IslandContact> contacts, std::span<const BodySlo
             c.kineticFriction = contact.friction;
             c.staticFriction = contact.staticFriction;
             c.restitution = contact.restitution;
+            prepareConstraintGeometry(c, a, b);
         }
     });
 }

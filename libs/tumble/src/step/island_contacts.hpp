@@ -66,8 +66,10 @@ void findIslandContacts(const CoupledIsland& island, std::span<BodySlot> slots,
                         const StepContext& context, Real horizon,
                         std::vector<IslandContact>& contacts);
 
-/// One constraint per contact point, with the geometry and material set (impulses zero); the
-/// contacts spread over `threads`, each writing its own constraints.
+/// One constraint per contact point, with the geometry, material, tangent basis, Jacobian rows
+/// and effective masses set (prepareConstraintGeometry, with the bodies' inverse masses and
+/// inertias now; impulses zero); the contacts spread over `threads`, each writing its own
+/// constraints.
 void buildConstraints(std::span<IslandContact> contacts, std::span<const BodySlot> slots,
                       const CoupledIsland& island, std::vector<ContactConstraint>& constraints,
                       int threads = 1);
