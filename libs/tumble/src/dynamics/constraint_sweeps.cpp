@@ -5,6 +5,7 @@
 #include "dynamics/friction_cone.hpp"
 #include "dynamics/island_solver.hpp"
 #include "dynamics/point_impulses.hpp"
+#include "dynamics/wide_sweep.hpp"
 #include "parallel_for.hpp"
 
 #include <algorithm>
@@ -22,13 +23,6 @@ namespace {
 /// colour on average: a colour ends at a barrier, which smaller shares would not pay for. The
 /// result is the same either way.
 constexpr std::size_t kRunsPerThread = 32;
-
-/// The largest impulse change, impulse and velocity correction of a sweep (11.5a).
-struct SweepMaxima {
-    Real change = 0.0;
-    Real impulse = 0.0;
-    Real correction = 0.0;
-};
 
 /// One point's normal step (11.4) then friction step (11.5), with accumulated clamping.
 void solvePoint(ContactConstraint& c, SolverBody& a, SolverBody& b, SweepMaxima& maxima)
@@ -140,6 +134,64 @@ SweepMaxima colouredPass(const SweepSchedule& schedule, std::span<Constraint> co
     return {change, impulse, correction};
 }
 
+/// One sweep colour by colour (11.5c) from the packed copy of the colours (11.5d): each colour's
+/// blocks of four runs, shared between the threads; then the overflow group one point after
+/// the other. The same velocities and impulses as colouredPass with solvePoint.
+SweepMaxima colouredSweep(const SweepSchedule& schedule, FourLaneSweeps& packed,
+                          std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
+                          int threads)
+{
+    const ConstraintColours& colours = schedule.colours;
+    const std::span<const std::uint32_t> runStart = schedule.runStart;
+    const auto solveOverflow = [&](SweepMaxima& maxima) {
+        for (const std::uint32_t run : colours.overflow()) {
+            for (std::uint32_t i = runStart[run]; i < runStart[run + 1]; ++i) {
+                ContactConstraint& c = constraints[i];
+                solvePoint(c, bodies[c.bodyA], bodies[c.bodyB], maxima);
+            }
+        }
+    };
+    const std::size_t runCount = runStart.size() - 1;
+    if (threads <= 1 ||
+        runCount < kRunsPerThread * static_cast<std::size_t>(threads) * colours.colourCount) {
+        SweepMaxima maxima;
+        for (std::uint32_t colour = 0; colour < colours.colourCount; ++colour) {
+            const auto [first, last] = packed.blocksOf(colour);
+            packed.sweep(first, last, bodies, maxima);
+        }
+        solveOverflow(maxima);
+        return maxima;
+    }
+    Real change = 0.0;
+    Real impulse = 0.0;
+    Real correction = 0.0;
+#ifdef TUMBLE_HAVE_OPENMP
+#pragma omp parallel num_threads(threads) reduction(max : change, impulse, correction)
+#endif
+    {
+        SweepMaxima mine;
+        for (std::uint32_t colour = 0; colour < colours.colourCount; ++colour) {
+            const auto [first, last] = packed.blocksOf(colour);
+            const auto count = static_cast<std::ptrdiff_t>(last - first);
+#ifdef TUMBLE_HAVE_OPENMP
+#pragma omp for schedule(static)
+#endif
+            for (std::ptrdiff_t k = 0; k < count; ++k) {
+                const std::size_t block = first + static_cast<std::size_t>(k);
+                packed.sweep(block, block + 1, bodies, mine);
+            }
+        }
+#ifdef TUMBLE_HAVE_OPENMP
+#pragma omp single
+#endif
+        solveOverflow(mine);
+        change = std::max(change, mine.change);
+        impulse = std::max(impulse, mine.impulse);
+        correction = std::max(correction, mine.correction);
+    }
+    return {change, impulse, correction};
+}
+
 } // namespace
 
 void scheduleSweeps(std::span<const ContactConstraint> constraints,
@@ -171,9 +223,20 @@ int solveConstraints(std::span<ContactConstraint> constraints, std::span<SolverB
                      const SweepSchedule& schedule, int iterations, Real convergence,
                      Real velocityTolerance, int threads)
 {
+    // (11.5d): a coloured solve not done after its first sweep goes on from a packed copy of
+    // its colours, four runs side by side; a settled island's one sweep does not pay for the copy
+    thread_local FourLaneSweeps packed;
+    bool isPacked = false;
+    int sweeps = iterations;
     for (int sweep = 1; sweep <= iterations; ++sweep) {
         SweepMaxima maxima;
-        if (schedule.coloured) {
+        if (schedule.coloured && sweep > 1) {
+            if (!isPacked) {
+                packed.pack(schedule, constraints);
+                isPacked = true;
+            }
+            maxima = colouredSweep(schedule, packed, constraints, bodies, threads);
+        } else if (schedule.coloured) {
             maxima = colouredPass(schedule, constraints, bodies, threads, solvePoint);
         } else {
             for (ContactConstraint& c : constraints) {
@@ -182,10 +245,14 @@ int solveConstraints(std::span<ContactConstraint> constraints, std::span<SolverB
         }
         if (maxima.change <= convergence * maxima.impulse ||
             maxima.correction <= velocityTolerance) {
-            return sweep;
+            sweeps = sweep;
+            break;
         }
     }
-    return iterations;
+    if (isPacked) {
+        packed.unpack(constraints);
+    }
+    return sweeps;
 }
 
 void warmStart(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,

@@ -1,0 +1,402 @@
+// Four manifolds of one colour solved side by side, one per vector lane
+// (docs/physics/11-island-solver.md, (11.4), (11.5), (11.5d)).
+#include "dynamics/wide_sweep.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+
+// The vectors below never cross this file's boundary, so how a target without 256-bit
+// registers passes them (the -Wpsabi note of GCC and Clang) does not matter.
+#if defined(__GNUC__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+
+namespace tumble {
+
+namespace {
+
+constexpr int kLanes = 4;
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#define TUMBLE_WIDE_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define TUMBLE_WIDE_CLONES
+#endif
+/// The helpers are inlined into each compiled copy of sweepBlocks, so each copy uses its own
+/// instructions throughout.
+#define TUMBLE_WIDE_INLINE inline __attribute__((always_inline))
+/// Four doubles, one per lane (GCC and Clang vector extensions: each operation is the IEEE
+/// operation of each lane, so a lane rounds exactly as the scalar step).
+/// Aligned to its size explicitly: without AVX, GCC gives a 32-byte vector only 16-byte
+/// alignment, which the AVX2 copy's aligned loads would not meet.
+using Wide = double __attribute__((vector_size(32), aligned(32)));
+/// A lane mask: all bits set where true (the result of comparing two Wide).
+using Mask = std::int64_t __attribute__((vector_size(32), aligned(32)));
+
+TUMBLE_WIDE_INLINE Wide splat(Real x) { return Wide{x, x, x, x}; }
+
+TUMBLE_WIDE_INLINE Wide select(Mask where, Wide yes, Wide no)
+{
+    return __builtin_bit_cast(Wide, (where & __builtin_bit_cast(Mask, yes)) |
+                                  (~where & __builtin_bit_cast(Mask, no)));
+}
+
+TUMBLE_WIDE_INLINE bool any(Mask m) { return (m[0] | m[1] | m[2] | m[3]) != 0; }
+
+TUMBLE_WIDE_INLINE Mask less(Wide a, Wide b) { return __builtin_bit_cast(Mask, a < b); }
+TUMBLE_WIDE_INLINE Mask lessEqual(Wide a, Wide b) { return __builtin_bit_cast(Mask, a <= b); }
+
+TUMBLE_WIDE_INLINE Wide absolute(Wide x)
+{
+    const Mask magnitude = __builtin_bit_cast(Mask, x) & Mask{INT64_MAX, INT64_MAX, INT64_MAX, INT64_MAX};
+    return __builtin_bit_cast(Wide, magnitude);
+}
+
+/// std::max(a, b) lane by lane: b where a < b, else a.
+TUMBLE_WIDE_INLINE Wide maximum(Wide a, Wide b) { return select(less(a, b), b, a); }
+
+TUMBLE_WIDE_INLINE Wide squareRoot(Wide x)
+{
+    Wide root = x;
+    for (int lane = 0; lane < kLanes; ++lane) {
+        root[lane] = std::sqrt(x[lane]);
+    }
+    return root;
+}
+
+struct Wide3 {
+    Wide x, y, z;
+};
+
+/// glm's dot: (a.x b.x + a.y b.y) + a.z b.z.
+TUMBLE_WIDE_INLINE Wide dot(const Wide3& a, const Wide3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+
+/// a - s d (or a + s d with `add`) where `where`, else a: one body's part of applyAlong.
+TUMBLE_WIDE_INLINE void pushAlong(Wide3& a, Wide s, const Wide3& d, Mask where, bool add)
+{
+    const Wide3 moved = add ? Wide3{a.x + s * d.x, a.y + s * d.y, a.z + s * d.z}
+                            : Wide3{a.x - s * d.x, a.y - s * d.y, a.z - s * d.z};
+    a = {select(where, moved.x, a.x), select(where, moved.y, a.y), select(where, moved.z, a.z)};
+}
+
+/// One point slot of a block: lane j holds the k-th point of the block's j-th run, or nothing
+/// (`active` clear, every field zero).
+struct WidePoint {
+    Wide3 normal, tangent1, tangent2;
+    std::array<Wide3, 3> angularA, angularB, responseA, responseB;
+    Wide normalMass, target, normalK;
+    /// K_t and its inverse (11.3), row-major (a C array: std::array drops the alignment).
+    Wide k[4];
+    Wide mass[4];
+    Wide friction, normalImpulse, impulse1, impulse2, shift, normalWork, frictionWork;
+    Mask active;
+};
+
+/// Four runs of one colour: their bodies, and where their points are, packed and unpacked.
+struct WideBlock {
+    std::array<std::uint32_t, kLanes> bodyA{};
+    std::array<std::uint32_t, kLanes> bodyB{};
+    std::array<std::uint32_t, kLanes> begin{};
+    std::array<std::uint32_t, kLanes> length{};
+    std::uint32_t lanes = 0;
+    std::size_t firstSlot = 0;
+    std::uint32_t slots = 0;
+};
+
+/// The two bodies of each lane's run, in registers while the block's points are solved.
+struct LaneBodies {
+    Wide3 linearA, angularA, linearB, angularB;
+    Wide invMassA, invMassB;
+    Mask movesA, movesB;
+};
+
+/// The sweep's maxima (11.5a), lane by lane.
+struct WideMaxima {
+    Wide change = splat(0.0);
+    Wide impulse = splat(0.0);
+    Wide correction = splat(0.0);
+};
+
+TUMBLE_WIDE_INLINE void setLane(Wide3& wide, int lane, const Vec3& v)
+{
+    wide.x[lane] = v.x;
+    wide.y[lane] = v.y;
+    wide.z[lane] = v.z;
+}
+
+TUMBLE_WIDE_INLINE Vec3 laneOf(const Wide3& wide, int lane) { return {wide.x[lane], wide.y[lane], wide.z[lane]}; }
+
+/// Copies constraint c into lane `lane` of a point slot.
+void packLane(WidePoint& p, int lane, const ContactConstraint& c)
+{
+    setLane(p.normal, lane, c.normal);
+    setLane(p.tangent1, lane, c.tangent1);
+    setLane(p.tangent2, lane, c.tangent2);
+    for (int axis = 0; axis < 3; ++axis) {
+        setLane(p.angularA[axis], lane, c.angularA[axis]);
+        setLane(p.angularB[axis], lane, c.angularB[axis]);
+        setLane(p.responseA[axis], lane, c.responseA[axis]);
+        setLane(p.responseB[axis], lane, c.responseB[axis]);
+    }
+    p.normalMass[lane] = c.normalMass;
+    p.target[lane] = c.targetNormalVelocity;
+    // the sum (11.2) as the one-point step forms it
+    p.normalK[lane] = c.normalKA + c.normalKB;
+    for (int i = 0; i < 4; ++i) {
+        p.k[i][lane] = c.tangentK[i];
+        p.mass[i][lane] = c.tangentMass[i];
+    }
+    p.friction[lane] = c.friction;
+    p.normalImpulse[lane] = c.normalImpulse;
+    p.impulse1[lane] = c.tangentImpulse1;
+    p.impulse2[lane] = c.tangentImpulse2;
+    p.shift[lane] = c.frictionShift;
+    p.normalWork[lane] = c.normalWork;
+    p.frictionWork[lane] = c.frictionWork;
+    p.active[lane] = -1;
+}
+
+/// frictionOnCone (friction_cone.cpp, (6.4)) lane by lane, the same operations in the same
+/// order; `shift` changes only in the lanes on the cone's edge.
+TUMBLE_WIDE_INLINE void frictionOnConeWide(const Wide (&k)[4], const Wide (&mass)[4],
+                        Wide current1, Wide current2, Wide bound, Wide v1, Wide v2, Wide& shift,
+                        Wide& impulse1, Wide& impulse2)
+{
+    const Wide free1 = v1 - (k[0] * current1 + k[1] * current2);
+    const Wide free2 = v2 - (k[2] * current1 + k[3] * current2);
+    impulse1 = -(mass[0] * free1 + mass[1] * free2);
+    impulse2 = -(mass[2] * free1 + mass[3] * free2);
+    const Wide freeMagnitude = squareRoot(impulse1 * impulse1 + impulse2 * impulse2);
+    const Mask outside = ~lessEqual(freeMagnitude, bound);
+    const Mask negligible = outside & lessEqual(bound, splat(1e-15) * freeMagnitude);
+    const Mask edge = outside & ~negligible;
+    if (any(edge)) {
+        Wide scaled1 = splat(0.0);
+        Wide scaled2 = splat(0.0);
+        Wide scaledMagnitude = splat(0.0);
+        const Wide inverseBound = splat(1.0) / bound;
+        Mask running = edge;
+        for (int iteration = 0; iteration < 50 && any(running); ++iteration) {
+            const Wide a = k[0] + shift;
+            const Wide d = k[3] + shift;
+            const Wide determinant = a * d - k[1] * k[1];
+            const Wide next1 = d * free1 - k[1] * free2;
+            const Wide next2 = a * free2 - k[1] * free1;
+            const Wide nextMagnitude = squareRoot(next1 * next1 + next2 * next2);
+            scaled1 = select(running, next1, scaled1);
+            scaled2 = select(running, next2, scaled2);
+            scaledMagnitude = select(running, nextMagnitude, scaledMagnitude);
+            const Wide boundTimesDeterminant = bound * determinant;
+            const Mask converged = lessEqual(absolute(nextMagnitude - boundTimesDeterminant),
+                                             splat(1e-15) * boundTimesDeterminant);
+            running = running & ~converged;
+            const Wide quadratic = d * next1 * next1 - splat(2.0) * k[1] * next1 * next2 +
+                                   a * next2 * next2;
+            const Wide stepped = maximum(
+                splat(0.0), shift - nextMagnitude * nextMagnitude *
+                                        (determinant - nextMagnitude * inverseBound) / quadratic);
+            shift = select(running, stepped, shift);
+        }
+        const Wide scale = -bound / scaledMagnitude;
+        impulse1 = select(edge, scale * scaled1, impulse1);
+        impulse2 = select(edge, scale * scaled2, impulse2);
+    }
+    impulse1 = select(negligible, splat(0.0), impulse1);
+    impulse2 = select(negligible, splat(0.0), impulse2);
+}
+
+/// solvePoint (constraint_sweeps.cpp) for one point slot of a block, in place.
+TUMBLE_WIDE_INLINE void solveSlot(WidePoint& p, LaneBodies& bodies, WideMaxima& maxima)
+{
+    const Mask movesA = p.active & bodies.movesA;
+    const Mask movesB = p.active & bodies.movesB;
+    const auto applyAlong = [&](const Wide3& direction, int axis, Wide impulse) {
+        pushAlong(bodies.linearA, bodies.invMassA * impulse, direction, movesA, false);
+        pushAlong(bodies.angularA, impulse, p.responseA[axis], movesA, false);
+        pushAlong(bodies.linearB, bodies.invMassB * impulse, direction, movesB, true);
+        pushAlong(bodies.angularB, impulse, p.responseB[axis], movesB, true);
+    };
+    // (11.4): normal impulse with accumulated clamping
+    const Wide normalA = dot(p.normal, bodies.linearA) + dot(p.angularA[0], bodies.angularA);
+    const Wide normalB = dot(p.normal, bodies.linearB) + dot(p.angularB[0], bodies.angularB);
+    const Wide normalImpulse =
+        maximum(splat(0.0), p.normalImpulse + p.normalMass * (p.target - (normalB - normalA)));
+    const Wide normalChange = normalImpulse - p.normalImpulse;
+    p.normalImpulse = normalImpulse;
+    applyAlong(p.normal, 0, normalChange);
+    p.normalWork += normalChange * (normalB - normalA + splat(0.5) * normalChange * p.normalK);
+    // (11.5): the friction step on the cone (6.4)
+    const Wide tangential[4]{
+        dot(p.tangent1, bodies.linearA) + dot(p.angularA[1], bodies.angularA),
+        dot(p.tangent2, bodies.linearA) + dot(p.angularA[2], bodies.angularA),
+        dot(p.tangent1, bodies.linearB) + dot(p.angularB[1], bodies.angularB),
+        dot(p.tangent2, bodies.linearB) + dot(p.angularB[2], bodies.angularB)};
+    Wide impulse1;
+    Wide impulse2;
+    frictionOnConeWide(p.k, p.mass, p.impulse1, p.impulse2, p.friction * normalImpulse,
+                       tangential[2] - tangential[0], tangential[3] - tangential[1], p.shift,
+                       impulse1, impulse2);
+    const Wide change1 = impulse1 - p.impulse1;
+    const Wide change2 = impulse2 - p.impulse2;
+    p.impulse1 = impulse1;
+    p.impulse2 = impulse2;
+    applyAlong(p.tangent1, 1, change1);
+    applyAlong(p.tangent2, 2, change2);
+    const Wide along1 =
+        tangential[2] - tangential[0] + splat(0.5) * (p.k[0] * change1 + p.k[1] * change2);
+    const Wide along2 =
+        tangential[3] - tangential[1] + splat(0.5) * (p.k[2] * change1 + p.k[3] * change2);
+    p.frictionWork += change1 * along1 + change2 * along2;
+    // the maxima of (11.5a), over the lanes that hold a point
+    const Wide corrected1 = p.k[0] * change1 + p.k[1] * change2;
+    const Wide corrected2 = p.k[2] * change1 + p.k[3] * change2;
+    const auto widen = [&](Wide& largest, Wide value) {
+        largest = maximum(largest, select(p.active, value, splat(0.0)));
+    };
+    widen(maxima.change, absolute(normalChange));
+    widen(maxima.change, absolute(change1));
+    widen(maxima.change, absolute(change2));
+    widen(maxima.impulse, normalImpulse);
+    widen(maxima.impulse, squareRoot(impulse1 * impulse1 + impulse2 * impulse2));
+    widen(maxima.correction, absolute(normalChange) / p.normalMass);
+    widen(maxima.correction, squareRoot(corrected1 * corrected1 + corrected2 * corrected2));
+}
+
+Real largestLane(const Wide& w) { return std::max({w[0], w[1], w[2], w[3]}); }
+
+} // namespace
+
+struct FourLaneSweeps::Storage {
+    std::vector<WideBlock> blocks;
+    /// Colour c's blocks are [colourBlocks[c], colourBlocks[c + 1]).
+    std::vector<std::size_t> colourBlocks;
+    std::vector<WidePoint> points;
+};
+
+namespace {
+
+/// FourLaneSweeps::sweep. On x86-64 with GCC it is compiled twice, for AVX2 (a lane to each
+/// of the four doubles of a register) and for the baseline, and the loader picks the one the
+/// processor runs; both give the same bits, since neither fuses a multiply and an add.
+TUMBLE_WIDE_CLONES
+void sweepBlocks(std::span<const WideBlock> blocks, std::span<WidePoint> points,
+                 std::span<SolverBody> bodies, WideMaxima& wide)
+{
+    const SolverBody none;
+    for (const WideBlock& block : blocks) {
+        std::array<const SolverBody*, kLanes> a{&none, &none, &none, &none};
+        std::array<const SolverBody*, kLanes> b{&none, &none, &none, &none};
+        for (std::uint32_t lane = 0; lane < block.lanes; ++lane) {
+            a[lane] = &bodies[block.bodyA[lane]];
+            b[lane] = &bodies[block.bodyB[lane]];
+        }
+        LaneBodies state;
+        for (int lane = 0; lane < kLanes; ++lane) {
+            setLane(state.linearA, lane, a[lane]->linearVelocity);
+            setLane(state.angularA, lane, a[lane]->angularVelocity);
+            setLane(state.linearB, lane, b[lane]->linearVelocity);
+            setLane(state.angularB, lane, b[lane]->angularVelocity);
+            state.invMassA[lane] = a[lane]->invMass;
+            state.invMassB[lane] = b[lane]->invMass;
+        }
+        // isFixed: the static geometry (zero inverse mass) is never written
+        state.movesA = ~__builtin_bit_cast(Mask, state.invMassA == splat(0.0));
+        state.movesB = ~__builtin_bit_cast(Mask, state.invMassB == splat(0.0));
+        for (std::uint32_t k = 0; k < block.slots; ++k) {
+            solveSlot(points[block.firstSlot + k], state, wide);
+        }
+        for (std::uint32_t lane = 0; lane < block.lanes; ++lane) {
+            const auto l = static_cast<int>(lane);
+            if (state.movesA[lane] != 0) {
+                bodies[block.bodyA[lane]].linearVelocity = laneOf(state.linearA, l);
+                bodies[block.bodyA[lane]].angularVelocity = laneOf(state.angularA, l);
+            }
+            if (state.movesB[lane] != 0) {
+                bodies[block.bodyB[lane]].linearVelocity = laneOf(state.linearB, l);
+                bodies[block.bodyB[lane]].angularVelocity = laneOf(state.angularB, l);
+            }
+        }
+    }
+}
+
+} // namespace
+
+FourLaneSweeps::FourLaneSweeps() : m_storage(std::make_unique<Storage>()) {}
+
+FourLaneSweeps::~FourLaneSweeps() = default;
+
+void FourLaneSweeps::pack(const SweepSchedule& schedule,
+                          std::span<const ContactConstraint> constraints)
+{
+    Storage& storage = *m_storage;
+    storage.blocks.clear();
+    storage.colourBlocks.assign(1, 0);
+    std::size_t slots = 0;
+    const ConstraintColours& colours = schedule.colours;
+    for (std::uint32_t colour = 0; colour < colours.colourCount; ++colour) {
+        const std::span<const std::uint32_t> runs = colours.colour(colour);
+        for (std::size_t first = 0; first < runs.size(); first += kLanes) {
+            WideBlock& block = storage.blocks.emplace_back();
+            block.lanes = static_cast<std::uint32_t>(std::min<std::size_t>(kLanes, runs.size() - first));
+            block.firstSlot = slots;
+            for (std::uint32_t lane = 0; lane < block.lanes; ++lane) {
+                const std::uint32_t run = runs[first + lane];
+                block.begin[lane] = schedule.runStart[run];
+                block.length[lane] = schedule.runStart[run + 1] - schedule.runStart[run];
+                block.bodyA[lane] = constraints[block.begin[lane]].bodyA;
+                block.bodyB[lane] = constraints[block.begin[lane]].bodyB;
+                block.slots = std::max(block.slots, block.length[lane]);
+            }
+            slots += block.slots;
+        }
+        storage.colourBlocks.push_back(storage.blocks.size());
+    }
+    storage.points.assign(slots, WidePoint{});
+    for (const WideBlock& block : storage.blocks) {
+        for (std::uint32_t lane = 0; lane < block.lanes; ++lane) {
+            for (std::uint32_t k = 0; k < block.length[lane]; ++k) {
+                packLane(storage.points[block.firstSlot + k], static_cast<int>(lane),
+                         constraints[block.begin[lane] + k]);
+            }
+        }
+    }
+}
+
+std::pair<std::size_t, std::size_t> FourLaneSweeps::blocksOf(std::uint32_t colour) const
+{
+    return {m_storage->colourBlocks[colour], m_storage->colourBlocks[colour + 1]};
+}
+
+void FourLaneSweeps::sweep(std::size_t first, std::size_t last, std::span<SolverBody> bodies,
+                           SweepMaxima& maxima)
+{
+    WideMaxima wide;
+    sweepBlocks(std::span<const WideBlock>(m_storage->blocks).subspan(first, last - first),
+                m_storage->points, bodies, wide);
+    maxima.change = std::max(maxima.change, largestLane(wide.change));
+    maxima.impulse = std::max(maxima.impulse, largestLane(wide.impulse));
+    maxima.correction = std::max(maxima.correction, largestLane(wide.correction));
+}
+
+void FourLaneSweeps::unpack(std::span<ContactConstraint> constraints) const
+{
+    const Storage& storage = *m_storage;
+    for (const WideBlock& block : storage.blocks) {
+        for (std::uint32_t lane = 0; lane < block.lanes; ++lane) {
+            for (std::uint32_t k = 0; k < block.length[lane]; ++k) {
+                const WidePoint& p = storage.points[block.firstSlot + k];
+                ContactConstraint& c = constraints[block.begin[lane] + k];
+                c.normalImpulse = p.normalImpulse[lane];
+                c.tangentImpulse1 = p.impulse1[lane];
+                c.tangentImpulse2 = p.impulse2[lane];
+                c.frictionShift = p.shift[lane];
+                c.normalWork = p.normalWork[lane];
+                c.frictionWork = p.frictionWork[lane];
+            }
+        }
+    }
+}
+
+} // namespace tumble
