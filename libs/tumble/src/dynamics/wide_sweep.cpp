@@ -207,17 +207,30 @@ TUMBLE_WIDE_INLINE void frictionOnConeWide(const Wide (&k)[4], const Wide (&mass
     impulse2 = select(negligible, splat(0.0), impulse2);
 }
 
+/// applyAlong (point_impulses.hpp): `impulse` along direction d (index `axis`: n, t1, t2) on B
+/// and its opposite on A, in the lanes where each body moves.
+TUMBLE_WIDE_INLINE void applyAlong(const WidePoint& p, LaneBodies& bodies, Mask movesA,
+                                   Mask movesB, const Wide3& direction, int axis, Wide impulse)
+{
+    pushAlong(bodies.linearA, bodies.invMassA * impulse, direction, movesA, false);
+    pushAlong(bodies.angularA, impulse, p.responseA[axis], movesA, false);
+    pushAlong(bodies.linearB, bodies.invMassB * impulse, direction, movesB, true);
+    pushAlong(bodies.angularB, impulse, p.responseB[axis], movesB, true);
+}
+
+/// largest = max(largest, value) in the lanes of `active`.
+TUMBLE_WIDE_INLINE void widen(Wide& largest, Wide value, Mask active)
+{
+    largest = maximum(largest, select(active, value, splat(0.0)));
+}
+
 /// solvePoint (constraint_sweeps.cpp) for one point slot of a block, in place.
 TUMBLE_WIDE_INLINE void solveSlot(WidePoint& p, LaneBodies& bodies, WideMaxima& maxima)
 {
+    // no lambdas here: unoptimised, a lambda stays a function of the baseline target, and a
+    // vector passed to it from the AVX2 copy would arrive by another convention
     const Mask movesA = p.active & bodies.movesA;
     const Mask movesB = p.active & bodies.movesB;
-    const auto applyAlong = [&](const Wide3& direction, int axis, Wide impulse) {
-        pushAlong(bodies.linearA, bodies.invMassA * impulse, direction, movesA, false);
-        pushAlong(bodies.angularA, impulse, p.responseA[axis], movesA, false);
-        pushAlong(bodies.linearB, bodies.invMassB * impulse, direction, movesB, true);
-        pushAlong(bodies.angularB, impulse, p.responseB[axis], movesB, true);
-    };
     // (11.4): normal impulse with accumulated clamping
     const Wide normalA = dot(p.normal, bodies.linearA) + dot(p.angularA[0], bodies.angularA);
     const Wide normalB = dot(p.normal, bodies.linearB) + dot(p.angularB[0], bodies.angularB);
@@ -225,7 +238,7 @@ TUMBLE_WIDE_INLINE void solveSlot(WidePoint& p, LaneBodies& bodies, WideMaxima& 
         maximum(splat(0.0), p.normalImpulse + p.normalMass * (p.target - (normalB - normalA)));
     const Wide normalChange = normalImpulse - p.normalImpulse;
     p.normalImpulse = normalImpulse;
-    applyAlong(p.normal, 0, normalChange);
+    applyAlong(p, bodies, movesA, movesB, p.normal, 0, normalChange);
     p.normalWork += normalChange * (normalB - normalA + splat(0.5) * normalChange * p.normalK);
     // (11.5): the friction step on the cone (6.4)
     const Wide tangential[4]{
@@ -242,8 +255,8 @@ TUMBLE_WIDE_INLINE void solveSlot(WidePoint& p, LaneBodies& bodies, WideMaxima& 
     const Wide change2 = impulse2 - p.impulse2;
     p.impulse1 = impulse1;
     p.impulse2 = impulse2;
-    applyAlong(p.tangent1, 1, change1);
-    applyAlong(p.tangent2, 2, change2);
+    applyAlong(p, bodies, movesA, movesB, p.tangent1, 1, change1);
+    applyAlong(p, bodies, movesA, movesB, p.tangent2, 2, change2);
     const Wide along1 =
         tangential[2] - tangential[0] + splat(0.5) * (p.k[0] * change1 + p.k[1] * change2);
     const Wide along2 =
@@ -252,16 +265,14 @@ TUMBLE_WIDE_INLINE void solveSlot(WidePoint& p, LaneBodies& bodies, WideMaxima& 
     // the maxima of (11.5a), over the lanes that hold a point
     const Wide corrected1 = p.k[0] * change1 + p.k[1] * change2;
     const Wide corrected2 = p.k[2] * change1 + p.k[3] * change2;
-    const auto widen = [&](Wide& largest, Wide value) {
-        largest = maximum(largest, select(p.active, value, splat(0.0)));
-    };
-    widen(maxima.change, absolute(normalChange));
-    widen(maxima.change, absolute(change1));
-    widen(maxima.change, absolute(change2));
-    widen(maxima.impulse, normalImpulse);
-    widen(maxima.impulse, squareRoot(impulse1 * impulse1 + impulse2 * impulse2));
-    widen(maxima.correction, absolute(normalChange) / p.normalMass);
-    widen(maxima.correction, squareRoot(corrected1 * corrected1 + corrected2 * corrected2));
+    widen(maxima.change, absolute(normalChange), p.active);
+    widen(maxima.change, absolute(change1), p.active);
+    widen(maxima.change, absolute(change2), p.active);
+    widen(maxima.impulse, normalImpulse, p.active);
+    widen(maxima.impulse, squareRoot(impulse1 * impulse1 + impulse2 * impulse2), p.active);
+    widen(maxima.correction, absolute(normalChange) / p.normalMass, p.active);
+    widen(maxima.correction, squareRoot(corrected1 * corrected1 + corrected2 * corrected2),
+          p.active);
 }
 
 Real largestLane(const Wide& w) { return std::max({w[0], w[1], w[2], w[3]}); }
