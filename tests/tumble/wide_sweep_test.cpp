@@ -162,12 +162,14 @@ TEST(FourLaneSweep, ASolveOfALargeIslandEndsAsTheSweepsOneAtATimeWould)
                 std::vector<ContactConstraint> before(points.begin(), points.end());
                 solveConstraints(points, oneByOne, 1, 0.0);
                 for (std::uint32_t k = 0; k < count; ++k) {
-                    change = std::max({change, std::abs(points[k].normalImpulse - before[k].normalImpulse),
-                                       std::abs(points[k].tangentImpulse1 - before[k].tangentImpulse1),
-                                       std::abs(points[k].tangentImpulse2 - before[k].tangentImpulse2)});
-                    impulse = std::max({impulse, points[k].normalImpulse,
-                                        std::sqrt(points[k].tangentImpulse1 * points[k].tangentImpulse1 +
-                                                  points[k].tangentImpulse2 * points[k].tangentImpulse2)});
+                    const ContactConstraint& now = points[k];
+                    const ContactConstraint& was = before[k];
+                    change = std::max({change, std::abs(now.normalImpulse - was.normalImpulse),
+                                       std::abs(now.tangentImpulse1 - was.tangentImpulse1),
+                                       std::abs(now.tangentImpulse2 - was.tangentImpulse2)});
+                    impulse = std::max({impulse, now.normalImpulse,
+                                        std::sqrt(now.tangentImpulse1 * now.tangentImpulse1 +
+                                                  now.tangentImpulse2 * now.tangentImpulse2)});
                 }
             }
         }
