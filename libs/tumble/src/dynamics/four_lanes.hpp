@@ -32,11 +32,11 @@ constexpr int kLanes = 4;
 /// operation of each lane, so a lane rounds exactly as the scalar step).
 /// Aligned to its size explicitly: without AVX, GCC gives a 32-byte vector only 16-byte
 /// alignment, which the AVX2 copy's aligned loads would not meet.
-using Wide = double __attribute__((vector_size(32), aligned(32)));
+using Wide = double __attribute__((vector_size(kLanes * 8), aligned(kLanes * 8)));
 /// A lane mask: all bits set where true (the result of comparing two Wide).
-using Mask = std::int64_t __attribute__((vector_size(32), aligned(32)));
+using Mask = std::int64_t __attribute__((vector_size(kLanes * 8), aligned(kLanes * 8)));
 
-TUMBLE_WIDE_INLINE Wide splat(Real x) { return Wide{x, x, x, x}; }
+TUMBLE_WIDE_INLINE Wide splat(Real x) { return Wide{} + x; }
 
 TUMBLE_WIDE_INLINE Wide select(Mask where, Wide yes, Wide no)
 {
@@ -44,14 +44,21 @@ TUMBLE_WIDE_INLINE Wide select(Mask where, Wide yes, Wide no)
                                   (~where & __builtin_bit_cast(Mask, no)));
 }
 
-TUMBLE_WIDE_INLINE bool any(Mask m) { return (m[0] | m[1] | m[2] | m[3]) != 0; }
+TUMBLE_WIDE_INLINE bool any(Mask m)
+{
+    std::int64_t bits = 0;
+    for (int lane = 0; lane < kLanes; ++lane) {
+        bits |= m[lane];
+    }
+    return bits != 0;
+}
 
 TUMBLE_WIDE_INLINE Mask less(Wide a, Wide b) { return __builtin_bit_cast(Mask, a < b); }
 TUMBLE_WIDE_INLINE Mask lessEqual(Wide a, Wide b) { return __builtin_bit_cast(Mask, a <= b); }
 
 TUMBLE_WIDE_INLINE Wide absolute(Wide x)
 {
-    const Mask signless{INT64_MAX, INT64_MAX, INT64_MAX, INT64_MAX};
+    const Mask signless = Mask{} + INT64_MAX;
     const Mask magnitude = __builtin_bit_cast(Mask, x) & signless;
     return __builtin_bit_cast(Wide, magnitude);
 }

@@ -151,7 +151,14 @@ TUMBLE_WIDE_INLINE void solveSlot(WidePoint& p, LaneBodies& bodies, WideMaxima& 
           p.active);
 }
 
-Real largestLane(const Wide& w) { return std::max({w[0], w[1], w[2], w[3]}); }
+Real largestLane(const Wide& w)
+{
+    Real largest = w[0];
+    for (int lane = 1; lane < kLanes; ++lane) {
+        largest = std::max(largest, w[lane]);
+    }
+    return largest;
+}
 
 } // namespace
 
@@ -173,8 +180,10 @@ void sweepBlocks(std::span<const WideBlock> blocks, std::span<WidePoint> points,
 {
     const SolverBody none;
     for (const WideBlock& block : blocks) {
-        std::array<const SolverBody*, kLanes> a{&none, &none, &none, &none};
-        std::array<const SolverBody*, kLanes> b{&none, &none, &none, &none};
+        std::array<const SolverBody*, kLanes> a{};
+        std::array<const SolverBody*, kLanes> b{};
+        a.fill(&none);
+        b.fill(&none);
         for (std::uint32_t lane = 0; lane < block.lanes; ++lane) {
             a[lane] = &bodies[block.bodyA[lane]];
             b[lane] = &bodies[block.bodyB[lane]];
