@@ -80,29 +80,25 @@ void findRuns(std::span<const ContactConstraint> constraints, SweepSchedule& sch
     schedule.runStart.push_back(static_cast<std::uint32_t>(constraints.size()));
 }
 
-/// One pass colour by colour, `step(c, a, b, maxima)` at each point; the runs of a colour share
-/// no dynamic body, so any split of them over threads gives the same velocities and impulses as
-/// one thread (11.5c).
-template <typename Constraint, typename PointStep>
-SweepMaxima colouredPass(const SweepSchedule& schedule, std::span<Constraint> constraints,
-                         std::span<SolverBody> bodies, int threads, const PointStep& step)
+/// A pass colour by colour (11.5c): `item(colour, k, maxima)` for the `count(colour)` items of
+/// each colour, then `overflow(maxima)`. The items of a colour share no dynamic body, so they
+/// are split over the threads, with the same velocities and impulses as on one, when each
+/// thread gets kRunsPerThread runs of a colour on average; a colour ends at a barrier.
+template <typename Count, typename Item, typename Overflow>
+SweepMaxima byColour(const SweepSchedule& schedule, int threads, const Count& count,
+                     const Item& item, const Overflow& overflow)
 {
     const ConstraintColours& colours = schedule.colours;
-    const auto solveRuns = [&](std::span<const std::uint32_t> runs, SweepMaxima& maxima) {
-        for (const std::uint32_t run : runs) {
-            for (std::uint32_t i = schedule.runStart[run]; i < schedule.runStart[run + 1]; ++i) {
-                Constraint& c = constraints[i];
-                step(c, bodies[c.bodyA], bodies[c.bodyB], maxima);
-            }
-        }
-    };
     const std::size_t runCount = schedule.runStart.size() - 1;
     if (threads <= 1 ||
         runCount < kRunsPerThread * static_cast<std::size_t>(threads) * colours.colourCount) {
         SweepMaxima maxima;
-        for (std::uint32_t colour = 0; colour <= colours.colourCount; ++colour) {
-            solveRuns(colours.colour(colour), maxima);
+        for (std::uint32_t colour = 0; colour < colours.colourCount; ++colour) {
+            for (std::size_t k = 0; k < count(colour); ++k) {
+                item(colour, k, maxima);
+            }
         }
+        overflow(maxima);
         return maxima;
     }
     Real change = 0.0;
@@ -114,19 +110,18 @@ SweepMaxima colouredPass(const SweepSchedule& schedule, std::span<Constraint> co
     {
         SweepMaxima mine;
         for (std::uint32_t colour = 0; colour < colours.colourCount; ++colour) {
-            const std::span<const std::uint32_t> runs = colours.colour(colour);
-            const auto count = static_cast<std::ptrdiff_t>(runs.size());
+            const auto items = static_cast<std::ptrdiff_t>(count(colour));
 #ifdef TUMBLE_HAVE_OPENMP
 #pragma omp for schedule(static)
 #endif
-            for (std::ptrdiff_t k = 0; k < count; ++k) {
-                solveRuns(runs.subspan(static_cast<std::size_t>(k), 1), mine);
+            for (std::ptrdiff_t k = 0; k < items; ++k) {
+                item(colour, static_cast<std::size_t>(k), mine);
             }
         }
 #ifdef TUMBLE_HAVE_OPENMP
 #pragma omp single
 #endif
-        solveRuns(colours.overflow(), mine);
+        overflow(mine);
         change = std::max(change, mine.change);
         impulse = std::max(impulse, mine.impulse);
         correction = std::max(correction, mine.correction);
@@ -134,62 +129,58 @@ SweepMaxima colouredPass(const SweepSchedule& schedule, std::span<Constraint> co
     return {change, impulse, correction};
 }
 
-/// One sweep colour by colour (11.5c) from the packed copy of the colours (11.5d): each colour's
-/// blocks of four runs, shared between the threads; then the overflow group one point after
-/// the other. The same velocities and impulses as colouredPass with solvePoint.
+/// The points of the given runs, each run's in order, `step(c, a, b, maxima)` at each.
+template <typename PointStep>
+void stepRuns(const SweepSchedule& schedule, std::span<const std::uint32_t> runs,
+              std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
+              SweepMaxima& maxima, const PointStep& step)
+{
+    for (const std::uint32_t run : runs) {
+        for (std::uint32_t i = schedule.runStart[run]; i < schedule.runStart[run + 1]; ++i) {
+            ContactConstraint& c = constraints[i];
+            step(c, bodies[c.bodyA], bodies[c.bodyB], maxima);
+        }
+    }
+}
+
+/// One pass colour by colour, `step(c, a, b, maxima)` at each point of each run in turn.
+template <typename PointStep>
+SweepMaxima colouredPass(const SweepSchedule& schedule, std::span<ContactConstraint> constraints,
+                         std::span<SolverBody> bodies, int threads, const PointStep& step)
+{
+    const ConstraintColours& colours = schedule.colours;
+    return byColour(
+        schedule, threads, [&](std::uint32_t colour) { return colours.colour(colour).size(); },
+        [&](std::uint32_t colour, std::size_t k, SweepMaxima& maxima) {
+            stepRuns(schedule, colours.colour(colour).subspan(k, 1), constraints, bodies, maxima,
+                     step);
+        },
+        [&](SweepMaxima& maxima) {
+            stepRuns(schedule, colours.overflow(), constraints, bodies, maxima, step);
+        });
+}
+
+/// One sweep colour by colour from the packed copy of the colours (11.5d): each colour's blocks
+/// of four runs, then the overflow group one point at a time. The same velocities and impulses
+/// as colouredPass with solvePoint.
 SweepMaxima colouredSweep(const SweepSchedule& schedule, FourLaneSweeps& packed,
                           std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
                           int threads)
 {
-    const ConstraintColours& colours = schedule.colours;
-    const std::span<const std::uint32_t> runStart = schedule.runStart;
-    const auto solveOverflow = [&](SweepMaxima& maxima) {
-        for (const std::uint32_t run : colours.overflow()) {
-            for (std::uint32_t i = runStart[run]; i < runStart[run + 1]; ++i) {
-                ContactConstraint& c = constraints[i];
-                solvePoint(c, bodies[c.bodyA], bodies[c.bodyB], maxima);
-            }
-        }
-    };
-    const std::size_t runCount = runStart.size() - 1;
-    if (threads <= 1 ||
-        runCount < kRunsPerThread * static_cast<std::size_t>(threads) * colours.colourCount) {
-        SweepMaxima maxima;
-        for (std::uint32_t colour = 0; colour < colours.colourCount; ++colour) {
+    return byColour(
+        schedule, threads,
+        [&](std::uint32_t colour) {
             const auto [first, last] = packed.blocksOf(colour);
-            packed.sweep(first, last, bodies, maxima);
-        }
-        solveOverflow(maxima);
-        return maxima;
-    }
-    Real change = 0.0;
-    Real impulse = 0.0;
-    Real correction = 0.0;
-#ifdef TUMBLE_HAVE_OPENMP
-#pragma omp parallel num_threads(threads) reduction(max : change, impulse, correction)
-#endif
-    {
-        SweepMaxima mine;
-        for (std::uint32_t colour = 0; colour < colours.colourCount; ++colour) {
-            const auto [first, last] = packed.blocksOf(colour);
-            const auto count = static_cast<std::ptrdiff_t>(last - first);
-#ifdef TUMBLE_HAVE_OPENMP
-#pragma omp for schedule(static)
-#endif
-            for (std::ptrdiff_t k = 0; k < count; ++k) {
-                const std::size_t block = first + static_cast<std::size_t>(k);
-                packed.sweep(block, block + 1, bodies, mine);
-            }
-        }
-#ifdef TUMBLE_HAVE_OPENMP
-#pragma omp single
-#endif
-        solveOverflow(mine);
-        change = std::max(change, mine.change);
-        impulse = std::max(impulse, mine.impulse);
-        correction = std::max(correction, mine.correction);
-    }
-    return {change, impulse, correction};
+            return last - first;
+        },
+        [&](std::uint32_t colour, std::size_t k, SweepMaxima& maxima) {
+            const std::size_t block = packed.blocksOf(colour).first + k;
+            packed.sweep(block, block + 1, bodies, maxima);
+        },
+        [&](SweepMaxima& maxima) {
+            stepRuns(schedule, schedule.colours.overflow(), constraints, bodies, maxima,
+                     solvePoint);
+        });
 }
 
 } // namespace
