@@ -223,7 +223,7 @@ int solveConstraints(std::span<ContactConstraint> constraints, std::span<SolverB
         SweepMaxima maxima;
         if (schedule.coloured && sweep > 1) {
             if (!isPacked) {
-                packed.pack(schedule, constraints);
+                packed.pack(schedule, constraints, threads);
                 isPacked = true;
             }
             maxima = colouredSweep(schedule, packed, constraints, bodies, threads);
@@ -241,7 +241,7 @@ int solveConstraints(std::span<ContactConstraint> constraints, std::span<SolverB
         }
     }
     if (isPacked) {
-        packed.unpack(constraints);
+        packed.unpack(constraints, threads);
     }
     return sweeps;
 }

@@ -3,6 +3,7 @@
 #include "dynamics/wide_sweep.hpp"
 
 #include "dynamics/four_lanes.hpp"
+#include "parallel_for.hpp"
 
 #include <algorithm>
 #include <array>
@@ -224,7 +225,7 @@ FourLaneSweeps::FourLaneSweeps() : m_storage(std::make_unique<Storage>()) {}
 FourLaneSweeps::~FourLaneSweeps() = default;
 
 void FourLaneSweeps::pack(const SweepSchedule& schedule,
-                          std::span<const ContactConstraint> constraints)
+                          std::span<const ContactConstraint> constraints, int threads)
 {
     Storage& storage = *m_storage;
     storage.blocks.clear();
@@ -250,15 +251,20 @@ void FourLaneSweeps::pack(const SweepSchedule& schedule,
         }
         storage.colourBlocks.push_back(storage.blocks.size());
     }
-    storage.points.assign(slots, WidePoint{});
-    for (const WideBlock& block : storage.blocks) {
+    storage.points.resize(slots);
+    // each block writes only its own slots
+    parallelFor(storage.blocks.size(), threads, [&](std::size_t b) {
+        const WideBlock& block = storage.blocks[b];
+        for (std::uint32_t k = 0; k < block.slots; ++k) {
+            storage.points[block.firstSlot + k] = WidePoint{};
+        }
         for (std::uint32_t lane = 0; lane < block.lanes; ++lane) {
             for (std::uint32_t k = 0; k < block.length[lane]; ++k) {
                 packLane(storage.points[block.firstSlot + k], static_cast<int>(lane),
                          constraints[block.begin[lane] + k]);
             }
         }
-    }
+    });
 }
 
 std::pair<std::size_t, std::size_t> FourLaneSweeps::blocksOf(std::uint32_t colour) const
@@ -277,10 +283,12 @@ void FourLaneSweeps::sweep(std::size_t first, std::size_t last, std::span<Solver
     maxima.correction = std::max(maxima.correction, largestLane(wide.correction));
 }
 
-void FourLaneSweeps::unpack(std::span<ContactConstraint> constraints) const
+void FourLaneSweeps::unpack(std::span<ContactConstraint> constraints, int threads) const
 {
     const Storage& storage = *m_storage;
-    for (const WideBlock& block : storage.blocks) {
+    // each block's runs are its own constraints
+    parallelFor(storage.blocks.size(), threads, [&](std::size_t b) {
+        const WideBlock& block = storage.blocks[b];
         for (std::uint32_t lane = 0; lane < block.lanes; ++lane) {
             for (std::uint32_t k = 0; k < block.length[lane]; ++k) {
                 const WidePoint& p = storage.points[block.firstSlot + k];
@@ -293,7 +301,7 @@ void FourLaneSweeps::unpack(std::span<ContactConstraint> constraints) const
                 c.frictionWork = p.frictionWork[lane];
             }
         }
-    }
+    });
 }
 
 } // namespace tumble

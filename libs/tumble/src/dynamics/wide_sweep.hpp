@@ -30,8 +30,10 @@ public:
     FourLaneSweeps(const FourLaneSweeps&) = delete;
     FourLaneSweeps& operator=(const FourLaneSweeps&) = delete;
 
-    /// Copies the constraints of the schedule's colours, impulses and work included.
-    void pack(const SweepSchedule& schedule, std::span<const ContactConstraint> constraints);
+    /// Copies the constraints of the schedule's colours, impulses and work included, the blocks
+    /// spread over `threads`.
+    void pack(const SweepSchedule& schedule, std::span<const ContactConstraint> constraints,
+              int threads = 1);
 
     /// The blocks of colour `colour`: [first, last).
     [[nodiscard]] std::pair<std::size_t, std::size_t> blocksOf(std::uint32_t colour) const;
@@ -44,8 +46,9 @@ public:
     void sweep(std::size_t first, std::size_t last, std::span<SolverBody> bodies,
                SweepMaxima& maxima);
 
-    /// Writes the impulses, friction shifts and work back to the constraints packed.
-    void unpack(std::span<ContactConstraint> constraints) const;
+    /// Writes the impulses, friction shifts and work back to the constraints packed, the blocks
+    /// spread over `threads`.
+    void unpack(std::span<ContactConstraint> constraints, int threads = 1) const;
 
 private:
     struct Storage;
