@@ -131,8 +131,7 @@ void CoupledStep::gatherBodies()
     const std::size_t count = m_island.bodies.size();
     m_bodies.assign(count + 1, SolverBody{});
     for (std::size_t i = 0; i < count; ++i) {
-        const Body& b = body(i);
-        m_bodies[i] = {b.linearVelocity, b.angularVelocity, b.invMass, b.invInertiaWorld};
+        m_bodies[i] = solverBodyOf(body(i));
     }
 }
 

@@ -247,22 +247,16 @@ void buildConstraints(std::span<IslandContact> contacts, std::span<const BodySlo
         points += static_cast<std::uint32_t>(contact.manifold.pointCount);
     }
     constraints.resize(points);
-    // the solver's view of a side's mass: zero inverses for the static side (gathered so by
-    // the step's solver bodies too)
-    const auto solverBodyOf = [&](std::uint32_t solver) {
-        SolverBody body;
-        if (solver != staticIndex) {
-            const Body& b = slots[island.bodies[solver]].body;
-            body.invMass = b.invMass;
-            body.invInertiaWorld = b.invInertiaWorld;
-        }
-        return body;
+    // the static side is the solver body of zero inverses, as in the step's solver bodies
+    const auto sideOf = [&](std::uint32_t solver) {
+        return solver != staticIndex ? solverBodyOf(slots[island.bodies[solver]].body)
+                                     : SolverBody{};
     };
     // each contact writes only its own constraints, geometry prepared while they are at hand
     parallelFor(contacts.size(), threads, [&](std::size_t index) {
         const IslandContact& contact = contacts[index];
-        const SolverBody a = solverBodyOf(contact.solverA);
-        const SolverBody b = solverBodyOf(contact.solverB);
+        const SolverBody a = sideOf(contact.solverA);
+        const SolverBody b = sideOf(contact.solverB);
         for (int k = 0; k < contact.manifold.pointCount; ++k) {
             const PairContactPoint& point = contact.manifold.points[k];
             ContactConstraint& c = constraints[contact.firstConstraint + k];

@@ -33,6 +33,13 @@ struct IslandContact {
     std::uint32_t firstConstraint = 0;
 };
 
+/// A dynamic body of an island as the solver sees it: its velocities and inverse mass
+/// properties (11.1).
+inline SolverBody solverBodyOf(const Body& body)
+{
+    return {body.linearVelocity, body.angularVelocity, body.invMass, body.invInertiaWorld};
+}
+
 /// (11.7): the material of a pair: the dynamic body's alone when the other side gives none,
 /// else the larger restitution and the geometric means of the friction coefficients.
 Material mixMaterials(const Material& dynamic, const std::optional<Material>& other);
