@@ -27,14 +27,16 @@ mkdir -p "$findings"
 status=0
 run_fuzzer() {
     local target="$1"
-    shift
+    local unit_seconds="$2"
+    shift 2
     local corpus="build-fuzz/corpus/$target"
     local log="build-fuzz/${target}.log"
     mkdir -p "$corpus"
     # git keeps no empty folder: a target with no regression yet has none in a fresh clone
     mkdir -p "tests/fuzz/regressions/$target"
     echo "ci-fuzz: $target for ${FUZZ_SECONDS} s"
-    # -timeout: one input running longer than this is a hang; -rss_limit_mb: a memory blow-up.
+    # -timeout: one input running longer than unit_seconds is a hang, and one running longer than
+    # that is reported as a slow unit, a finding too; -rss_limit_mb: a memory blow-up.
     # The first corpus directory collects new inputs; the others are read only.
     local rc=0
     # A target whose findings are reported only keeps fuzzing after one (in a child process) so
@@ -44,7 +46,7 @@ run_fuzzer() {
         keep_going=(-fork=1 -ignore_crashes=1)
     fi
     "build-fuzz/tests/fuzz/${target}_fuzzer" "${keep_going[@]}" "$corpus" "$@" "tests/fuzz/regressions/$target" \
-        -max_total_time="$FUZZ_SECONDS" -timeout=10 -rss_limit_mb=2048 \
+        -max_total_time="$FUZZ_SECONDS" -timeout="$unit_seconds" -report_slow_units="$unit_seconds" -rss_limit_mb=2048 \
         -artifact_prefix="$findings/${target}-" -print_final_stats=1 >"$log" 2>&1 || rc=$?
     grep -E "^#[0-9]+ +(INITED|DONE)|^stat::(number_of_executed_units|average_exec_per_sec|new_units_added|peak_rss_mb)|^Done" "$log" || true
     if [[ $rc -ne 0 ]] || compgen -G "$findings/${target}-*" >/dev/null; then
@@ -52,7 +54,8 @@ run_fuzzer() {
         if [[ " $FUZZ_REPORT_ONLY " == *" $target "* ]]; then
             echo "ci-fuzz: $target FINDING, reported only (FUZZ_REPORT_ONLY); inputs in $findings" >&2
         else
-            echo "ci-fuzz: $target FAILED (exit $rc); inputs in $findings, log $log" >&2
+            # a slow unit (-report_slow_units) exits 0 but leaves its input
+            echo "ci-fuzz: $target FAILED (exit $rc): $(cd "$findings" && ls -m "${target}"-* 2>/dev/null); inputs in $findings, log $log" >&2
             status=1
         fi
     else
@@ -60,6 +63,11 @@ run_fuzzer() {
     fi
 }
 
-run_fuzzer scenario_loader scenarios -dict=tests/fuzz/scenario.dict -max_len=4096
-run_fuzzer world_step tests/fuzz/seeds/world_step -max_len=256
+run_fuzzer scenario_loader 10 scenarios -dict=tests/fuzz/scenario.dict -max_len=4096
+# A world-step input is up to 300 steps of one body, each bounded by (4.3b) (32 sub-steps, 128
+# searches and their resting solves, 512 advances, docs/physics/04-detection.md), not by a time:
+# the slowest inputs found take about 1 s a run in a release build and up to 20 s under the
+# sanitizers on a loaded 2-core machine. 60 s is three times that; a loop that never ends still
+# runs past it.
+run_fuzzer world_step 60 tests/fuzz/seeds/world_step -max_len=256
 exit "$status"

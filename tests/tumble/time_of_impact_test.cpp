@@ -21,6 +21,12 @@ namespace {
 /// The impact tolerance of the default world: 1e-4 of the 1e-4 m contact tolerance.
 constexpr Real kImpactTolerance = 1e-8;
 
+Real search(const SubstepMotion& motion, const Vec3& halfExtents)
+{
+    int advances = 0;
+    return timeOfImpact(motion, halfExtents, Plane{}, 0u, kImpactTolerance, advances);
+}
+
 /// A 1000 x 1 x 1 stick at a random orientation, turning and falling slowly, with its lowest
 /// vertex `height` above the plane.
 SubstepMotion fallingStick(std::mt19937_64& random, Real height, Integrator integrator)
@@ -75,7 +81,7 @@ TEST(TimeOfImpact, AVertexJustAboveTheToleranceGivesAPositiveTime)
                 continue;
             }
             ++searched;
-            EXPECT_GT(timeOfImpact(motion, halfExtents, Plane{}, 0u, kImpactTolerance), 0.0)
+            EXPECT_GT(search(motion, halfExtents), 0.0)
                 << "draw " << draw;
         }
         EXPECT_GT(searched, 500);
@@ -103,7 +109,7 @@ TEST(TimeOfImpact, ACubeTurningOntoItsEdgeMeetsThePlaneWhenTheClosedFormSays)
                 return (0.25 * std::numbers::pi - std::acos((centreHeight - height) / root2)) /
                        spin;
             };
-            const Real found = timeOfImpact(motion, halfExtents, Plane{}, 0u, kImpactTolerance);
+            const Real found = search(motion, halfExtents);
             EXPECT_GE(found, timeAtHeight(kImpactTolerance) * (1.0 - 1e-9))
                 << "spin " << spin << ", centre at " << centreHeight;
             EXPECT_LE(found, timeAtHeight(0.5 * kImpactTolerance) * (1.0 + 1e-9))
@@ -147,7 +153,7 @@ TEST(TimeOfImpact, NeverStepsPastACrossing)
                                                                Vec3(1.0, 0.0, 0.0));
         }
         motion.inertiaBody = cuboidInertiaDiagonal(1.0, 2.0 * halfExtents);
-        const Real found = timeOfImpact(motion, halfExtents, Plane{}, 0u, kImpactTolerance);
+        const Real found = search(motion, halfExtents);
         ASSERT_GE(found, 0.0);
         ASSERT_LE(found, motion.tau);
         // With (4.4) alone a general cuboid may run out of advances before its vertex arrives,

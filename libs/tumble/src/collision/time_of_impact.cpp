@@ -66,10 +66,12 @@ Real axisReach(const Vec3& halfExtents, Real radius, int axis, Real otherRate, R
 
 /// (4.4) alone: each advance is the clearance above the aim over the bound on the approach speed.
 Real linearAdvancement(const SubstepMotion& motion, const Vec3& halfExtents, const Plane& plane,
-                       std::uint8_t touchingVertices, Real tolerance, Real approachBound)
+                       std::uint8_t touchingVertices, Real tolerance, Real approachBound,
+                       int& advances)
 {
     Real s = 0.0;
     for (int advance = 0; advance < kMaxAdvances; ++advance) {
+        ++advances;
         const Real height = freeClearance(motion, halfExtents, plane, touchingVertices, s);
         if (height <= tolerance) {
             return s;
@@ -124,7 +126,7 @@ Real quadraticAdvance(Real clearance, Real rate, Real curvature)
 } // namespace
 
 Real timeOfImpact(const SubstepMotion& motion, const Vec3& halfExtents, const Plane& plane,
-                  std::uint8_t touchingVertices, Real tolerance)
+                  std::uint8_t touchingVertices, Real tolerance, int& advances)
 {
     if (touchingVertices == 0xffu) {
         return motion.tau;
@@ -153,10 +155,11 @@ Real timeOfImpact(const SubstepMotion& motion, const Vec3& halfExtents, const Pl
         rates.curvature * radius;
     if (!std::isfinite(curvature)) {
         return linearAdvancement(motion, halfExtents, plane, touchingVertices, tolerance,
-                                 approachBound);
+                                 approachBound, advances);
     }
     Real s = 0.0;
     for (int advance = 0; advance < kMaxAdvances; ++advance) {
+        ++advances;
         const VertexHeights vertices = vertexHeightsAndRates(motion, halfExtents, plane, s);
         Real height = std::numeric_limits<Real>::infinity();
         for (int i = 0; i < 8; ++i) {

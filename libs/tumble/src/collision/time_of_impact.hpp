@@ -32,8 +32,9 @@ Real freeClearance(const SubstepMotion& motion, const Vec3& halfExtents, const P
 
 /// The earliest s in (0, tau] at which a vertex outside `touchingVertices` (bit i = vertex i)
 /// comes within `tolerance` of the plane, or tau when none does. Never steps past a crossing:
-/// each advance is the remaining clearance over a bound on the approach speed (4.4).
+/// each advance is the remaining clearance over a bound on the approach speed (4.4). Adds the
+/// advances it took (one pose each) to `advances`.
 Real timeOfImpact(const SubstepMotion& motion, const Vec3& halfExtents, const Plane& plane,
-                  std::uint8_t touchingVertices, Real tolerance);
+                  std::uint8_t touchingVertices, Real tolerance, int& advances);
 
 } // namespace tumble

@@ -33,6 +33,11 @@ constexpr int kMaxSubsteps = 32;
 /// (4.3b): time-of-impact searches in one sub-step, and in one whole step; once a step has spent
 /// them, the sub-step in hand ends the step, so one step costs at most twice the budget.
 constexpr int kMaxImpactSearches = 64;
+/// (4.3b): advances of the time of impact (one pose each) in one whole step; like the searches,
+/// they decide only whether another sub-step starts. The scenarios take at most about 130 a
+/// step; a thin body chattering on an edge asked for thousands, each pose up to eight
+/// compositions of the exact rotation (2.7a).
+constexpr int kMaxStepAdvances = 512;
 /// (4.3a) aims the end height of the arriving vertex half way between the impact tolerance (below
 /// which the time of impact calls the sub-step crossing) and the impact band (at or below which a
 /// clear sub-step ends the search), in impact tolerances.
@@ -195,6 +200,7 @@ private:
     Real m_energy;
     Real m_elapsed = 0.0;
     int m_searches = 0;
+    int m_advances = 0;
     /// Velocities at the start of the sub-step's velocity stage.
     Vec3 m_velocityStart{0.0};
     Vec3 m_angularVelocityStart{0.0};
@@ -229,8 +235,10 @@ void SolitaryStep::run(Real dt)
         if (!(m_elapsed < dt)) {
             break;
         }
-        // (4.3b): the last sub-step allowed, or one that spent the step's searches, ends it
-        if (substep + 1 >= kMaxSubsteps || m_searches >= kMaxImpactSearches) {
+        // (4.3b): the last sub-step allowed, or one that spent the step's searches or advances,
+        // ends it
+        if (substep + 1 >= kMaxSubsteps || m_searches >= kMaxImpactSearches ||
+            m_advances >= kMaxStepAdvances) {
             break;
         }
     }
@@ -294,7 +302,8 @@ Real SolitaryStep::searchSubstep(ContactManifold& contacts, Real tau, ContactWor
         motion.inertiaBody = m_body.inertiaBody();
         motion.tau = tau;
         motion.integrator = m_settings.integrator;
-        const Real impact = timeOfImpact(motion, halfExtents, ground, touching, m_impactTolerance);
+        const Real impact = timeOfImpact(motion, halfExtents, ground, touching, m_impactTolerance,
+                                         m_advances);
         Real next = 0.0;
         if (impact >= tau) {
             // done when nothing crossed, when the vertex found ends the sub-step within the
