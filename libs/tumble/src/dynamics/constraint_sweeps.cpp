@@ -1,6 +1,7 @@
 // Gauss-Seidel sweeps over an island's contact points, in input order for a small island and
 // colour by colour for a large one, whose colours spread over threads
 // (docs/physics/11-island-solver.md, (11.4), (11.5), (11.5a), (11.5c)).
+#include "dynamics/active_set_step.hpp"
 #include "dynamics/constraint_colouring.hpp"
 #include "dynamics/friction_cone.hpp"
 #include "dynamics/island_solver.hpp"
@@ -23,6 +24,10 @@ namespace {
 /// colour on average: a colour ends at a barrier, which smaller shares would not pay for. The
 /// result is the same either way.
 constexpr std::size_t kRunsPerThread = 32;
+/// (11.5e): sweeps between the steps on the active rows of an input-order solve, and the
+/// conjugate-gradient iterations of one.
+constexpr int kActiveSetPeriod = 8;
+constexpr int kActiveSetIterations = 256;
 
 /// One point's normal step (11.4) then friction step (11.5), with accumulated clamping.
 void solvePoint(ContactConstraint& c, SolverBody& a, SolverBody& b, SweepMaxima& maxima)
@@ -219,6 +224,7 @@ int solveConstraints(std::span<ContactConstraint> constraints, std::span<SolverB
     thread_local FourLaneSweeps packed;
     bool isPacked = false;
     int sweeps = iterations;
+    bool activeSetHelps = true;
     for (int sweep = 1; sweep <= iterations; ++sweep) {
         SweepMaxima maxima;
         if (schedule.coloured && sweep > 1) {
@@ -238,6 +244,12 @@ int solveConstraints(std::span<ContactConstraint> constraints, std::span<SolverB
             maxima.correction <= velocityTolerance) {
             sweeps = sweep;
             break;
+        }
+        // (11.5e): every kActiveSetPeriod sweeps of an input-order solve, the rows found active
+        // together, until such a step fails to lower the objective
+        if (!schedule.coloured && sweep % kActiveSetPeriod == 0 && sweep < iterations &&
+            activeSetHelps) {
+            activeSetHelps = stepOnActiveSet(constraints, bodies, kActiveSetIterations);
         }
     }
     if (isPacked) {
