@@ -1,6 +1,6 @@
 // Gauss-Seidel sweeps over an island's contact points, in input order for a small island and
 // colour by colour for a large one, whose colours spread over threads
-// (docs/physics/11-island-solver.md, (11.4), (11.5), (11.5a), (11.5c)).
+// (docs/physics/11-island-solver.md, (11.4), (11.5), (11.5a), (11.5c), (11.5e)).
 #include "dynamics/active_set_step.hpp"
 #include "dynamics/constraint_colouring.hpp"
 #include "dynamics/friction_cone.hpp"
