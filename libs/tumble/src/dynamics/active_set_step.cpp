@@ -127,7 +127,7 @@ Real diagonalOf(const ContactConstraint& c, int axis)
 /// otherwise grow. Each iteration lowers x^T (K + delta D) x / 2 - residual^T x, so the last
 /// iterate is the best one, even where the residual's norm rises.
 void conjugateGradients(std::span<const ContactConstraint> constraints, int iterations,
-                        ActiveSetScratch& s)
+                        int& budget, ActiveSetScratch& s)
 {
     constexpr Real kRegularisation = 1e-9;
     const std::size_t n = s.rows.size();
@@ -146,7 +146,8 @@ void conjugateGradients(std::span<const ContactConstraint> constraints, int iter
     Real rz = dot(s.residual, s.preconditioned);
     Real squared = dot(s.residual, s.residual);
     const Real stop = 1e-24 * squared;
-    for (int iteration = 0; iteration < iterations && squared > stop; ++iteration) {
+    for (int iteration = 0; iteration < iterations && budget > 0 && squared > stop;
+         ++iteration, --budget) {
         multiply(constraints, s);
         for (std::size_t i = 0; i < n; ++i) {
             s.product[i] += kRegularisation * s.diagonal[i] * s.direction[i];
@@ -235,7 +236,7 @@ Real applyStep(std::span<const ContactConstraint> constraints, std::span<SolverB
 } // namespace
 
 bool stepOnActiveSet(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
-                     int iterations)
+                     int iterations, int& budget)
 {
     thread_local ActiveSetScratch scratch;
     ActiveSetScratch& s = scratch;
@@ -244,7 +245,7 @@ bool stepOnActiveSet(std::span<ContactConstraint> constraints, std::span<SolverB
         return false;
     }
     s.saved.assign(bodies.begin(), bodies.end());
-    conjugateGradients(constraints, iterations, s);
+    conjugateGradients(constraints, iterations, budget, s);
     projectStep(constraints, bodies, s);
     if (!(applyStep(constraints, bodies, s) < 0.0)) {
         std::copy(s.saved.begin(), s.saved.end(), bodies.begin());

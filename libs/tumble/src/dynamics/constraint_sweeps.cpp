@@ -25,7 +25,10 @@ namespace {
 /// result is the same either way.
 constexpr std::size_t kRunsPerThread = 32;
 /// (11.5e): sweeps between the steps on the active rows of an input-order solve, and the
-/// conjugate-gradient iterations of one.
+/// conjugate-gradient iterations of one; all the steps of a solve take at most eight times as
+/// many iterations as it may take sweeps, each about the price of a sweep, so a solve that the
+/// steps do not bring to an end costs at most about nine times what its sweeps cost (a column of
+/// 20 landing cube by cube needs that much: at four times it does not settle).
 constexpr int kActiveSetPeriod = 8;
 constexpr int kActiveSetIterations = 256;
 
@@ -225,6 +228,7 @@ int solveConstraints(std::span<ContactConstraint> constraints, std::span<SolverB
     bool isPacked = false;
     int sweeps = iterations;
     bool activeSetHelps = true;
+    int activeSetBudget = 8 * iterations;
     for (int sweep = 1; sweep <= iterations; ++sweep) {
         SweepMaxima maxima;
         if (schedule.coloured && sweep > 1) {
@@ -248,8 +252,9 @@ int solveConstraints(std::span<ContactConstraint> constraints, std::span<SolverB
         // (11.5e): every kActiveSetPeriod sweeps of an input-order solve, the rows found active
         // together, until such a step fails to lower the objective
         if (!schedule.coloured && sweep % kActiveSetPeriod == 0 && sweep < iterations &&
-            activeSetHelps) {
-            activeSetHelps = stepOnActiveSet(constraints, bodies, kActiveSetIterations);
+            activeSetHelps && activeSetBudget > 0) {
+            activeSetHelps =
+                stepOnActiveSet(constraints, bodies, kActiveSetIterations, activeSetBudget);
         }
     }
     if (isPacked) {
