@@ -2,6 +2,7 @@
 // (11.5e)).
 #include "dynamics/active_set_step.hpp"
 
+#include "dynamics/friction_cone.hpp"
 #include "dynamics/point_impulses.hpp"
 
 #include <algorithm>
@@ -19,18 +20,10 @@ struct Row {
     int axis = 0;
 };
 
-/// The direction of axis 0, 1, 2 of a constraint.
-const Vec3& directionOf(const ContactConstraint& c, int axis)
-{
-    return axis == 0 ? c.normal : (axis == 1 ? c.tangent1 : c.tangent2);
-}
-
-/// The relative point velocity u = J_row v along a row (11.2).
+/// The relative point velocity along a row of a constraint between two of `bodies`.
 Real rowVelocity(const ContactConstraint& c, std::span<const SolverBody> bodies, int axis)
 {
-    const Vec3& d = directionOf(c, axis);
-    return pointVelocityAlong(bodies[c.bodyB], d, c.angularB[axis]) -
-           pointVelocityAlong(bodies[c.bodyA], d, c.angularA[axis]);
+    return rowVelocity(c, bodies[c.bodyA], bodies[c.bodyB], axis);
 }
 
 /// Where the friction of a pushing point is strictly inside its cone: its tangent rows are
@@ -186,18 +179,12 @@ void projectStep(std::span<const ContactConstraint> constraints,
     for (std::size_t k = 0; k < constraints.size(); ++k) {
         const ContactConstraint& c = constraints[k];
         const Real normal = std::max(0.0, c.normalImpulse + s.change[k][0]);
-        Real tangent1 = c.tangentImpulse1 + s.change[k][1];
-        Real tangent2 = c.tangentImpulse2 + s.change[k][2];
-        const Real bound = c.friction * normal;
-        const Real magnitude = std::sqrt(tangent1 * tangent1 + tangent2 * tangent2);
-        if (magnitude > bound) {
-            const Real scale = magnitude > 0.0 ? bound / magnitude : 0.0;
-            tangent1 *= scale;
-            tangent2 *= scale;
-        }
-        s.next[k] = {normal, tangent1, tangent2};
-        s.change[k] = {normal - c.normalImpulse, tangent1 - c.tangentImpulse1,
-                       tangent2 - c.tangentImpulse2};
+        const FrictionImpulse friction =
+            scaledIntoDisc(c.tangentImpulse1 + s.change[k][1],
+                           c.tangentImpulse2 + s.change[k][2], c.friction * normal);
+        s.next[k] = {normal, friction.impulse1, friction.impulse2};
+        s.change[k] = {normal - c.normalImpulse, friction.impulse1 - c.tangentImpulse1,
+                       friction.impulse2 - c.tangentImpulse2};
         for (int axis = 0; axis < 3; ++axis) {
             s.before[k][static_cast<std::size_t>(axis)] = rowVelocity(c, bodies, axis);
         }

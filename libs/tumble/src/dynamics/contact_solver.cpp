@@ -3,6 +3,7 @@
 #include "dynamics/contact_solver.hpp"
 
 #include "body_state.hpp"
+#include "dynamics/friction_cone.hpp"
 #include "dynamics/plane_sweeps.hpp"
 #include "dynamics/solver_point.hpp"
 #include "tumble_assert.hpp"
@@ -186,14 +187,11 @@ ContactWork solveRestingContact(Body& body, ContactManifold& manifold,
         }
         point.normalImpulse = std::max(0.0, warmStart.normalRate[vertex] * tau);
         const Vec3 friction = warmStart.frictionRate[vertex] * tau;
-        point.tangentImpulse1 = glm::dot(friction, solve.frame.t1);
-        point.tangentImpulse2 = glm::dot(friction, solve.frame.t2);
-        const Real bound = point.friction * point.normalImpulse;
-        const Real magnitude = planarLength(point.tangentImpulse1, point.tangentImpulse2);
-        if (magnitude > bound) {
-            point.tangentImpulse1 *= bound / magnitude;
-            point.tangentImpulse2 *= bound / magnitude;
-        }
+        const FrictionImpulse inCone =
+            scaledIntoDisc(glm::dot(friction, solve.frame.t1), glm::dot(friction, solve.frame.t2),
+                           point.friction * point.normalImpulse);
+        point.tangentImpulse1 = inCone.impulse1;
+        point.tangentImpulse2 = inCone.impulse2;
         applyImpulseAtOffset(body,
                              point.normalImpulse * solve.frame.n +
                                  point.tangentImpulse1 * solve.frame.t1 +

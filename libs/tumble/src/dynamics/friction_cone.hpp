@@ -5,6 +5,7 @@
 #include "tumble/math.hpp"
 
 #include <array>
+#include <cmath>
 
 namespace tumble {
 
@@ -21,6 +22,18 @@ struct FrictionImpulse {
 /// sliding exactly opposite to it (maximal dissipation). `tangentK` and `tangentMass` are K_t
 /// and its inverse (6.3), row-major; `shift` is where Newton's method on s starts, and is left
 /// at the solution for the next call.
+/// (6.2): a friction impulse outside the disc |lambda| <= bound scaled back onto its edge, along
+/// its own direction (a zero bound gives zero); inside the disc it is kept as it is.
+inline FrictionImpulse scaledIntoDisc(Real impulse1, Real impulse2, Real bound)
+{
+    const Real magnitude = std::sqrt(impulse1 * impulse1 + impulse2 * impulse2);
+    if (magnitude <= bound) {
+        return {impulse1, impulse2};
+    }
+    const Real scale = magnitude > 0.0 ? bound / magnitude : 0.0;
+    return {scale * impulse1, scale * impulse2};
+}
+
 FrictionImpulse frictionOnCone(const std::array<Real, 4>& tangentK,
                                const std::array<Real, 4>& tangentMass, Real current1,
                                Real current2, Real bound, Real v1, Real v2, Real& shift);

@@ -133,16 +133,15 @@ bool frictionDrivesSliding(const Body& body, const SolverFrame& frame,
 void clampFrictionToCone(Body& body, const SolverFrame& frame, std::span<SolverPoint> points)
 {
     for (SolverPoint& point : points) {
-        const Real bound = point.friction * point.normalImpulse;
-        const Real magnitude = planarLength(point.tangentImpulse1, point.tangentImpulse2);
-        if (magnitude <= bound) {
+        const FrictionImpulse inCone = scaledIntoDisc(
+            point.tangentImpulse1, point.tangentImpulse2, point.friction * point.normalImpulse);
+        const Real change1 = inCone.impulse1 - point.tangentImpulse1;
+        const Real change2 = inCone.impulse2 - point.tangentImpulse2;
+        if (change1 == 0.0 && change2 == 0.0) {
             continue;
         }
-        const Real scale = bound / magnitude;
-        const Real change1 = (scale - 1.0) * point.tangentImpulse1;
-        const Real change2 = (scale - 1.0) * point.tangentImpulse2;
-        point.tangentImpulse1 += change1;
-        point.tangentImpulse2 += change2;
+        point.tangentImpulse1 = inCone.impulse1;
+        point.tangentImpulse2 = inCone.impulse2;
         applyImpulseAtOffset(body, change1 * frame.t1 + change2 * frame.t2, point.r);
     }
 }

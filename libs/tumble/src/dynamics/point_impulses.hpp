@@ -15,6 +15,21 @@ inline Real pointVelocityAlong(const SolverBody& body, const Vec3& direction, co
     return glm::dot(direction, body.linearVelocity) + glm::dot(angular, body.angularVelocity);
 }
 
+/// The direction of row 0, 1, 2 of a constraint: n, t1, t2.
+inline const Vec3& directionOf(const ContactConstraint& c, int axis)
+{
+    return axis == 0 ? c.normal : (axis == 1 ? c.tangent1 : c.tangent2);
+}
+
+/// The relative point velocity u = vB - vA along row `axis` of a constraint, the row of J times
+/// the bodies' velocities (11.2).
+inline Real rowVelocity(const ContactConstraint& c, const SolverBody& a, const SolverBody& b,
+                        int axis)
+{
+    const Vec3& d = directionOf(c, axis);
+    return pointVelocityAlong(b, d, c.angularB[axis]) - pointVelocityAlong(a, d, c.angularA[axis]);
+}
+
 /// Whether a solver body is the island's static geometry, which no impulse moves. Its state is
 /// never written, so the points of one colour may share it across threads (11.5c).
 inline bool isFixed(const SolverBody& body) { return body.invMass == 0.0; }
@@ -62,19 +77,17 @@ inline void applyFriction(ContactConstraint& c, SolverBody& a, SolverBody& b, Re
 /// booked under the normal heading as one impulse, P . (u_before + u_after) / 2 (8.2).
 inline void warmStartPoint(ContactConstraint& c, SolverBody& a, SolverBody& b)
 {
-    const std::array<Vec3, 3> directions{c.normal, c.tangent1, c.tangent2};
     const std::array<Real, 3> impulses{c.normalImpulse, c.tangentImpulse1, c.tangentImpulse2};
     const auto relativeWork = [&] {
         Real work = 0.0;
         for (int axis = 0; axis < 3; ++axis) {
-            work += impulses[axis] * (pointVelocityAlong(b, directions[axis], c.angularB[axis]) -
-                                      pointVelocityAlong(a, directions[axis], c.angularA[axis]));
+            work += impulses[axis] * rowVelocity(c, a, b, axis);
         }
         return work;
     };
     const Real before = relativeWork();
     for (int axis = 0; axis < 3; ++axis) {
-        applyAlong(c, a, b, directions[axis], axis, impulses[axis]);
+        applyAlong(c, a, b, directionOf(c, axis), axis, impulses[axis]);
     }
     c.normalWork += 0.5 * (before + relativeWork());
 }

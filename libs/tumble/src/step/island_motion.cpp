@@ -2,6 +2,7 @@
 #include "step/island_motion.hpp"
 
 #include "body_state.hpp"
+#include "dynamics/friction_cone.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/island_solver.hpp"
 #include "parallel_for.hpp"
@@ -93,16 +94,11 @@ void startFrom(ContactConstraint& c, const CachedContactPoint& cached, Real tau)
     const Real shorter = std::min(1.0, tau / cached.tau);
     c.normalImpulse = shorter * cached.normalImpulse;
     const Vec3 friction = shorter * cached.frictionImpulse;
-    c.tangentImpulse1 = glm::dot(c.tangent1, friction);
-    c.tangentImpulse2 = glm::dot(c.tangent2, friction);
-    const Real bound = c.friction * c.normalImpulse;
-    const Real magnitude =
-        std::sqrt(c.tangentImpulse1 * c.tangentImpulse1 + c.tangentImpulse2 * c.tangentImpulse2);
-    if (magnitude > bound) {
-        const Real scale = magnitude > 0.0 ? bound / magnitude : 0.0;
-        c.tangentImpulse1 *= scale;
-        c.tangentImpulse2 *= scale;
-    }
+    const FrictionImpulse inCone =
+        scaledIntoDisc(glm::dot(c.tangent1, friction), glm::dot(c.tangent2, friction),
+                       c.friction * c.normalImpulse);
+    c.tangentImpulse1 = inCone.impulse1;
+    c.tangentImpulse2 = inCone.impulse2;
 }
 
 } // namespace
