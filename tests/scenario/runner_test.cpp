@@ -40,7 +40,7 @@ Real totalEnergy(const Runner& runner)
 /// (benchmark S5) steps for about two minutes over its 10 s in an optimised build; its first
 /// 0.5 s bring the lower layers down onto each other and cost seconds, also under the sanitizers
 /// (issue 16). Its whole run is
-/// ContactScenarios.ThePileOfOneHundredSettlesOnTheGroundWithNothingFlyingOff.
+/// ContactScenarios.ThePileOfOneHundredSettlesOnTheGroundAndCreatesNoEnergy.
 std::vector<std::string> shortened(const std::filesystem::path& file)
 {
     if (file.filename() == "pile_100.toml") {
