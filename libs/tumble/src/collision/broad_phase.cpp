@@ -139,22 +139,39 @@ void BroadPhase::sweep(int threads)
 {
     m_pairs.clear();
     const std::size_t count = m_entries.size();
+    // the pairs in proxy order, not sweep order, so they depend on the proxies alone
     if (threads <= 1 || count < kEntriesPerShare * static_cast<std::size_t>(threads)) {
         sweepFrom(0, count, m_pairs);
-    } else {
-        // each share of the sorted entries finds the pairs of its first boxes
-        const std::size_t shares = count / kEntriesPerShare;
-        m_sharePairs.resize(shares);
-        parallelFor(shares, threads, [&](std::size_t share) {
-            m_sharePairs[share].clear();
-            sweepFrom(count * share / shares, count * (share + 1) / shares, m_sharePairs[share]);
-        });
-        for (const std::vector<ProxyPair>& pairs : m_sharePairs) {
-            m_pairs.insert(m_pairs.end(), pairs.begin(), pairs.end());
-        }
+        std::sort(m_pairs.begin(), m_pairs.end());
+        return;
     }
-    // proxy order, not sweep order, so the pairs depend on the proxies alone
-    std::sort(m_pairs.begin(), m_pairs.end());
+    // each share of the sorted entries finds and sorts the pairs of its first boxes
+    const std::size_t shares = count / kEntriesPerShare;
+    m_sharePairs.resize(shares);
+    parallelFor(shares, threads, [&](std::size_t share) {
+        std::vector<ProxyPair>& pairs = m_sharePairs[share];
+        pairs.clear();
+        sweepFrom(count * share / shares, count * (share + 1) / shares, pairs);
+        std::sort(pairs.begin(), pairs.end());
+    });
+    m_shareEnds.assign(1, 0);
+    for (const std::vector<ProxyPair>& pairs : m_sharePairs) {
+        m_pairs.insert(m_pairs.end(), pairs.begin(), pairs.end());
+        m_shareEnds.push_back(m_pairs.size());
+    }
+    // neighbouring sorted runs merged level by level, each level's merges over the threads
+    for (std::size_t width = 1; width < shares; width *= 2) {
+        const std::size_t merges = (shares + 2 * width - 1) / (2 * width);
+        parallelFor(merges, threads, [&](std::size_t merge) {
+            const std::size_t first = 2 * width * merge;
+            const std::size_t middle = std::min(first + width, shares);
+            const std::size_t last = std::min(first + 2 * width, shares);
+            const auto begin = m_pairs.begin();
+            std::inplace_merge(begin + static_cast<std::ptrdiff_t>(m_shareEnds[first]),
+                               begin + static_cast<std::ptrdiff_t>(m_shareEnds[middle]),
+                               begin + static_cast<std::ptrdiff_t>(m_shareEnds[last]));
+        });
+    }
 }
 
 } // namespace tumble

@@ -61,6 +61,8 @@ private:
     std::vector<ProxyPair> m_pairs;
     /// The pairs found from each share of the sorted entries, when the sweep is shared.
     std::vector<std::vector<ProxyPair>> m_sharePairs;
+    /// Where each share's sorted pairs end in m_pairs, after a 0, while they are merged.
+    std::vector<std::size_t> m_shareEnds;
     int m_axis = 0;
 };
 

@@ -3,13 +3,14 @@
 
 #include "dynamics/constraint_colouring.hpp"
 #include "dynamics/island_solver.hpp"
+#include "parallel_for.hpp"
 
 #include <numeric>
 
 namespace tumble {
 
 void orderContactsByColour(std::vector<IslandContact>& contacts, std::size_t solverBodies,
-                           std::vector<IslandContact>& spare)
+                           std::vector<IslandContact>& spare, int threads)
 {
     std::size_t points = 0;
     for (const IslandContact& contact : contacts) {
@@ -31,10 +32,11 @@ void orderContactsByColour(std::vector<IslandContact>& contacts, std::size_t sol
     std::vector<std::uint8_t> fixed(solverBodies, 0);
     fixed.back() = 1;
     const ConstraintColours colours = colourConstraints(runs, fixed, kMaxConstraintColours);
-    spare.clear();
-    for (const std::uint32_t run : colours.constraints) {
-        spare.push_back(contacts[withPoints[run]]);
-    }
+    const std::size_t coloured = colours.constraints.size();
+    spare.resize(coloured);
+    parallelFor(coloured, threads, [&](std::size_t k) {
+        spare[k] = contacts[withPoints[colours.constraints[k]]];
+    });
     for (const IslandContact& contact : contacts) {
         if (contact.manifold.pointCount == 0) {
             spare.push_back(contact);

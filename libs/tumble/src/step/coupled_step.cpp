@@ -148,7 +148,7 @@ void CoupledStep::run(Real dt)
         const Real remaining = dt - m_elapsed;
         // narrow phase: every point within reach of the rest of the step
         findIslandContacts(m_island, m_slots, m_context, remaining, m_contacts);
-        orderContactsByColour(m_contacts, count + 1, m_spareContacts);
+        orderContactsByColour(m_contacts, count + 1, m_spareContacts, m_context.threads);
         buildConstraints(m_contacts, m_slots, m_island, m_constraints, m_context.threads);
         m_gapMotions.clear();
         ++m_events.statistics.substeps;

@@ -58,21 +58,38 @@ void setMaterial(IslandContact& contact, const Material& material)
     contact.staticFriction = material.staticFrictionOrKinetic();
 }
 
+/// The contacts of the island's bodies with the ground and the static planes, body by body and
+/// in that order, each body's found on one of `threads` threads.
 void addHalfSpaceContacts(const CoupledIsland& island, std::span<const BodySlot> slots,
-                          const StepContext& context, std::span<const Real> reach,
+                          const StepContext& context, std::span<const Real> reach, int threads,
                           std::vector<IslandContact>& contacts)
 {
+    const std::size_t sides = (context.ground ? 1 : 0) + context.planes.size();
+    if (sides == 0) {
+        return;
+    }
     const auto staticIndex = static_cast<std::uint32_t>(island.bodies.size());
     const Real tolerance = context.settings.contactTolerance;
-    for (std::uint32_t local = 0; local < island.bodies.size(); ++local) {
+    // kept from step to step by the calling thread, named below through these references
+    thread_local std::vector<IslandContact> keptFound;
+    thread_local std::vector<std::uint8_t> keptTouches;
+    std::vector<IslandContact>& found = keptFound;
+    std::vector<std::uint8_t>& touches = keptTouches;
+    found.resize(island.bodies.size() * sides);
+    touches.assign(found.size(), 0);
+    parallelFor(island.bodies.size(), threads, [&](std::size_t index) {
+        const auto local = static_cast<std::uint32_t>(index);
         const Body& body = slots[island.bodies[local]].body;
         const Transform pose{body.position, body.orientation};
         const Real margin = tolerance + reach[local];
+        std::size_t slot = index * sides;
         const auto addContact = [&](const Vec3& point, const Vec3& normal, std::uint32_t side,
                                     const std::optional<Material>& material) {
             IslandContact contact;
             contact.manifold =
                 collideCuboidHalfSpace(pose, body.shape.halfExtents(), point, normal, margin);
+            const std::size_t here = slot++;
+            touches[here] = contact.manifold.pointCount > 0 ? 1 : 0;
             if (contact.manifold.pointCount == 0) {
                 return;
             }
@@ -83,7 +100,7 @@ void addHalfSpaceContacts(const CoupledIsland& island, std::span<const BodySlot>
             contact.owner = local;
             contact.ownerKey = side;
             setMaterial(contact, mixMaterials(body.material, material));
-            contacts.push_back(contact);
+            found[here] = contact;
         };
         if (context.ground) {
             addContact(Vec3(0.0, context.ground->height, 0.0), Plane::normal(), kGroundSide,
@@ -92,6 +109,11 @@ void addHalfSpaceContacts(const CoupledIsland& island, std::span<const BodySlot>
         for (std::uint32_t k = 0; k < context.planes.size(); ++k) {
             const StaticPlane& plane = context.planes[k];
             addContact(plane.point, plane.normal, kPlaneSide + k, plane.material);
+        }
+    });
+    for (std::size_t slot = 0; slot < found.size(); ++slot) {
+        if (touches[slot] != 0) {
+            contacts.push_back(found[slot]);
         }
     }
 }
@@ -199,11 +221,22 @@ void findPairContactsOverThreads(const CoupledIsland& island, std::span<BodySlot
                                        ofPair[k]) ? 1 : 0;
         }
     });
+    // each found contact to its place in the order of the pairs
+    thread_local std::vector<std::uint32_t> keptPlace;
+    std::vector<std::uint32_t>& place = keptPlace;
+    place.resize(pairs);
+    std::uint32_t count = 0;
     for (std::size_t k = 0; k < pairs; ++k) {
-        if (found[k] != 0) {
-            contacts.push_back(ofPair[k]);
-        }
+        place[k] = count;
+        count += found[k];
     }
+    const std::size_t first = contacts.size();
+    contacts.resize(first + count);
+    parallelFor(pairs, threads, [&](std::size_t k) {
+        if (found[k] != 0) {
+            contacts[first + place[k]] = ofPair[k];
+        }
+    });
 }
 
 } // namespace
@@ -226,7 +259,7 @@ void findIslandContacts(const CoupledIsland& island, std::span<BodySlot> slots,
             }
         }
     }
-    addHalfSpaceContacts(island, slots, context, reach, contacts);
+    addHalfSpaceContacts(island, slots, context, reach, context.threads, contacts);
 }
 
 void buildConstraints(std::span<IslandContact> contacts, std::span<const BodySlot> slots,
