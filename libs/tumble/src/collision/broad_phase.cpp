@@ -145,8 +145,10 @@ void BroadPhase::sweep(int threads)
         std::sort(m_pairs.begin(), m_pairs.end());
         return;
     }
-    // each share of the sorted entries finds and sorts the pairs of its first boxes
-    const std::size_t shares = count / kEntriesPerShare;
+    // each share of the sorted entries finds and sorts the pairs of its first boxes; as many
+    // shares to each thread
+    const auto threadCount = static_cast<std::size_t>(threads);
+    const std::size_t shares = count / kEntriesPerShare / threadCount * threadCount;
     m_sharePairs.resize(shares);
     parallelFor(shares, threads, [&](std::size_t share) {
         std::vector<ProxyPair>& pairs = m_sharePairs[share];

@@ -209,10 +209,10 @@ void findPairContactsOverThreads(const CoupledIsland& island, std::span<BodySlot
     const std::size_t pairs = island.pairs.size();
     ofPair.resize(pairs);
     ownerOf.resize(pairs);
-    for (std::size_t k = 0; k < pairs; ++k) {
+    parallelFor(pairs, threads, [&](std::size_t k) {
         const auto [slotA, slotB] = island.pairs[k];
         ownerOf[k] = solverIndexOf(island, pairGeometryOwner(slots, slotA, slotB));
-    }
+    });
     groups.build(ownerOf, island.bodies.size());
     found.assign(pairs, 0);
     parallelFor(groups.count(), threads, [&](std::size_t g) {
