@@ -90,6 +90,31 @@ TEST(BroadPhase, ASweepSharedBetweenThreadsFindsEveryPairOnce)
     }
 }
 
+TEST(BroadPhase, ASweepSharedBetweenThreadsMergesItsSharesIntoOneSortedList)
+{
+    // 1500 boxes make 10 shares on two threads, 9 on three and 8 on four, each sorted; they are
+    // merged level by level (a share left over at some levels), ending in the pairs' own buffer
+    // after the even number of levels of 10 and 9 and copied back into it after the three of 8
+    std::mt19937 random(4242);
+    const auto proxies = randomProxies(random, 1500, 30.0, 3.0, 5);
+    const std::vector<ProxyPair> expected = allOverlappingPairs(proxies);
+    BroadPhase shared;
+    shared.update(proxies, 2);
+    const ProxyPair* buffer = shared.pairs().data();
+    for (int update = 0; update < 3; ++update) {
+        shared.update(proxies, 2);
+        const std::vector<ProxyPair> pairs(shared.pairs().begin(), shared.pairs().end());
+        EXPECT_EQ(pairs, expected) << update;
+        EXPECT_EQ(shared.pairs().data(), buffer) << update;
+    }
+    for (const int threads : {3, 4}) {
+        BroadPhase more;
+        more.update(proxies, threads);
+        const std::vector<ProxyPair> pairs(more.pairs().begin(), more.pairs().end());
+        EXPECT_EQ(pairs, expected) << threads << " threads";
+    }
+}
+
 TEST(BroadPhase, StaticBoxesPairOnlyWithMovableOnes)
 {
     std::vector<BroadPhaseProxy> proxies(3);

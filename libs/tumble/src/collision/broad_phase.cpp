@@ -161,18 +161,27 @@ void BroadPhase::sweep(int threads)
         m_pairs.insert(m_pairs.end(), pairs.begin(), pairs.end());
         m_shareEnds.push_back(m_pairs.size());
     }
-    // neighbouring sorted runs merged level by level, each level's merges over the threads
+    // neighbouring sorted runs merged level by level, each level's merges over the threads,
+    // between the pairs and a kept buffer (no allocation once both have grown)
+    m_mergedPairs.resize(m_pairs.size());
+    std::vector<ProxyPair>* from = &m_pairs;
+    std::vector<ProxyPair>* to = &m_mergedPairs;
     for (std::size_t width = 1; width < shares; width *= 2) {
         const std::size_t merges = (shares + 2 * width - 1) / (2 * width);
         parallelFor(merges, threads, [&](std::size_t merge) {
             const std::size_t first = 2 * width * merge;
             const std::size_t middle = std::min(first + width, shares);
             const std::size_t last = std::min(first + 2 * width, shares);
-            const auto begin = m_pairs.begin();
-            std::inplace_merge(begin + static_cast<std::ptrdiff_t>(m_shareEnds[first]),
-                               begin + static_cast<std::ptrdiff_t>(m_shareEnds[middle]),
-                               begin + static_cast<std::ptrdiff_t>(m_shareEnds[last]));
+            const auto at = [&](std::vector<ProxyPair>& pairs, std::size_t share) {
+                return pairs.begin() + static_cast<std::ptrdiff_t>(m_shareEnds[share]);
+            };
+            std::merge(at(*from, first), at(*from, middle), at(*from, middle), at(*from, last),
+                       at(*to, first));
         });
+        std::swap(from, to);
+    }
+    if (from != &m_pairs) {
+        std::copy(from->begin(), from->end(), m_pairs.begin());
     }
 }
 

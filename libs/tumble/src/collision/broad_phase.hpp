@@ -63,6 +63,8 @@ private:
     std::vector<std::vector<ProxyPair>> m_sharePairs;
     /// Where each share's sorted pairs end in m_pairs, after a 0, while they are merged.
     std::vector<std::size_t> m_shareEnds;
+    /// The other side of each level of the merge.
+    std::vector<ProxyPair> m_mergedPairs;
     int m_axis = 0;
 };
 
