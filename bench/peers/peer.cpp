@@ -55,6 +55,9 @@ std::vector<Entry> entries() {
 #ifdef TUMBLE_PEER_JOLT
     list.push_back({detail::joltName(), &detail::runJolt});
 #endif
+#ifdef TUMBLE_PEER_BOX3D
+    list.push_back({detail::box3dName(), &detail::runBox3d});
+#endif
     return list;
 }
 

@@ -34,5 +34,9 @@ PeerResult runMujoco(const PeerScene& scene);
 std::string joltName();
 PeerResult runJolt(const PeerScene& scene);
 #endif
+#ifdef TUMBLE_PEER_BOX3D
+std::string box3dName();
+PeerResult runBox3d(const PeerScene& scene);
+#endif
 
 } // namespace tumble::bench::detail
