@@ -14,6 +14,9 @@ namespace tumble {
 
 namespace {
 
+/// Scales of the projected step tried, 1, 1/2, 1/4 and 1/8, before it is refused.
+constexpr int kHalvings = 4;
+
 /// A row of J: the direction `axis` (0: n, 1: t1, 2: t2) of constraint `point`.
 struct Row {
     std::uint32_t point = 0;
@@ -120,7 +123,7 @@ Real diagonalOf(const ContactConstraint& c, int axis)
 /// otherwise grow. Each iteration lowers x^T (K + delta D) x / 2 - residual^T x, so the last
 /// iterate is the best one, even where the residual's norm rises.
 void conjugateGradients(std::span<const ContactConstraint> constraints, int iterations,
-                        int& budget, ActiveSetScratch& s)
+                        Real velocityTolerance, int& budget, ActiveSetScratch& s)
 {
     constexpr Real kRegularisation = 1e-9;
     const std::size_t n = s.rows.size();
@@ -138,7 +141,8 @@ void conjugateGradients(std::span<const ContactConstraint> constraints, int iter
     s.delta.assign(s.saved.begin(), s.saved.end());
     Real rz = dot(s.residual, s.preconditioned);
     Real squared = dot(s.residual, s.residual);
-    const Real stop = 1e-24 * squared;
+    // |r| <= tolerance bounds every row's residual, a velocity, by the solve's own tolerance
+    const Real stop = std::max(1e-24 * squared, velocityTolerance * velocityTolerance);
     for (int iteration = 0; iteration < iterations && budget > 0 && squared > stop;
          ++iteration, --budget) {
         multiply(constraints, s);
@@ -223,7 +227,7 @@ Real applyStep(std::span<const ContactConstraint> constraints, std::span<SolverB
 } // namespace
 
 bool stepOnActiveSet(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
-                     int iterations, int& budget)
+                     int iterations, int& budget, Real velocityTolerance)
 {
     thread_local ActiveSetScratch scratch;
     ActiveSetScratch& s = scratch;
@@ -232,10 +236,23 @@ bool stepOnActiveSet(std::span<ContactConstraint> constraints, std::span<SolverB
         return false;
     }
     s.saved.assign(bodies.begin(), bodies.end());
-    conjugateGradients(constraints, iterations, budget, s);
-    projectStep(constraints, bodies, s);
-    if (!(applyStep(constraints, bodies, s) < 0.0)) {
-        std::copy(s.saved.begin(), s.saved.end(), bodies.begin());
+    conjugateGradients(constraints, iterations, velocityTolerance, budget, s);
+    // the projected step, then its half, quarter and eighth: the first that lowers the
+    // objective is kept (a backtracking line search along the step)
+    bool lowered = false;
+    for (int halving = 0; halving < kHalvings && !lowered; ++halving) {
+        if (halving > 0) {
+            for (Real& x : s.solution) {
+                x *= 0.5;
+            }
+        }
+        projectStep(constraints, bodies, s);
+        lowered = applyStep(constraints, bodies, s) < 0.0;
+        if (!lowered) {
+            std::copy(s.saved.begin(), s.saved.end(), bodies.begin());
+        }
+    }
+    if (!lowered) {
         return false;
     }
     for (std::size_t k = 0; k < constraints.size(); ++k) {

@@ -254,7 +254,8 @@ int solveConstraints(std::span<ContactConstraint> constraints, std::span<SolverB
         if (!schedule.coloured && sweep % kActiveSetPeriod == 0 && sweep < iterations &&
             activeSetHelps && activeSetBudget > 0) {
             activeSetHelps =
-                stepOnActiveSet(constraints, bodies, kActiveSetIterations, activeSetBudget);
+                stepOnActiveSet(constraints, bodies, kActiveSetIterations, activeSetBudget,
+                                velocityTolerance);
         }
     }
     if (isPacked) {
