@@ -1,8 +1,8 @@
 #pragma once
 
-// Plain-data interface to the peer engines (Bullet, ODE, MuJoCo, and Jolt from an external build)
-// that the benchmark compares tumble against. It deliberately needs no tumble header, so the peers
-// can be built and run on their own.
+// Plain-data interface to the peer engines (Bullet, ODE, MuJoCo, and Jolt and Box3D from external
+// builds) that the benchmark compares tumble against. It deliberately needs no tumble header, so
+// the peers can be built and run on their own.
 
 #include <array>
 #include <stdexcept>
