@@ -3,11 +3,22 @@
 
 #include <algorithm>
 
+#include <glm/geometric.hpp>
+
 namespace tumble {
 
 PairManifold collideCuboidHalfSpace(const Transform& pose, const Vec3& halfExtents,
                                     const Vec3& planePoint, const Vec3& planeNormal, Real margin)
 {
+    // no vertex lies nearer the plane than the centre less the half diagonal, |R p_i| = |h|:
+    // beyond the margin by more than the heights' rounding, none is within it
+    const Real radius = glm::length(halfExtents);
+    const Real centre = glm::dot(planeNormal, pose.position - planePoint);
+    const Real rounding =
+        1e-12 * (glm::length(pose.position) + glm::length(planePoint) + radius);
+    if (centre - radius > margin + rounding) {
+        return {};
+    }
     // (4.1) for a normal n: h_i = n . (x + R p_i - p0); vertices with h_i <= margin, deepest first
     const std::array<Vec3, 8> local = cuboidVertices(halfExtents);
     std::array<std::pair<Real, int>, 8> heights{};

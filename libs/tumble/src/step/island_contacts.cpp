@@ -85,14 +85,15 @@ void addHalfSpaceContacts(const CoupledIsland& island, std::span<const BodySlot>
         std::size_t slot = index * sides;
         const auto addContact = [&](const Vec3& point, const Vec3& normal, std::uint32_t side,
                                     const std::optional<Material>& material) {
-            IslandContact contact;
-            contact.manifold =
+            const PairManifold manifold =
                 collideCuboidHalfSpace(pose, body.shape.halfExtents(), point, normal, margin);
             const std::size_t here = slot++;
-            touches[here] = contact.manifold.pointCount > 0 ? 1 : 0;
-            if (contact.manifold.pointCount == 0) {
+            touches[here] = manifold.pointCount > 0 ? 1 : 0;
+            if (manifold.pointCount == 0) {
                 return;
             }
+            IslandContact contact;
+            contact.manifold = manifold;
             contact.solverA = staticIndex;
             contact.solverB = local;
             contact.sideA = side;
