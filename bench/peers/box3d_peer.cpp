@@ -12,7 +12,6 @@
 #include <box3d/types.h>
 
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -203,12 +202,7 @@ PeerResult runBox3d(const PeerScene& scene) {
     result.heapBytes = heapInUse() - heapBefore;
 
     const float dt = float(scene.dt);
-    const auto start = std::chrono::steady_clock::now();
-    for (long step = 0; step < scene.steps; ++step) {
-        b3World_Step(bw.id, dt, kSubSteps);
-    }
-    const auto stop = std::chrono::steady_clock::now();
-    result.stepSeconds = std::chrono::duration<double>(stop - start).count();
+    result.stepSeconds = timeSteps(scene.steps, [&] { b3World_Step(bw.id, dt, kSubSteps); });
     result.heapBytesAtEnd = heapInUse() - heapBefore;
 
     result.finalPositions.reserve(bw.bodies.size());

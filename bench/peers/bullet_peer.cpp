@@ -6,7 +6,6 @@
 #include <btBulletDynamicsCommon.h>
 
 #include <array>
-#include <chrono>
 #include <map>
 #include <memory>
 #include <sstream>
@@ -143,12 +142,7 @@ PeerResult runBullet(const PeerScene& scene) {
 
     // maxSubSteps 0 steps by exactly dt each call, with no accumulator or interpolation.
     const btScalar dt = btScalar(scene.dt);
-    const auto start = std::chrono::steady_clock::now();
-    for (long step = 0; step < scene.steps; ++step) {
-        bw.world->stepSimulation(dt, 0, dt);
-    }
-    const auto stop = std::chrono::steady_clock::now();
-    result.stepSeconds = std::chrono::duration<double>(stop - start).count();
+    result.stepSeconds = timeSteps(scene.steps, [&] { bw.world->stepSimulation(dt, 0, dt); });
     result.heapBytesAtEnd = heapInUse() - heapBefore;
 
     result.finalPositions.reserve(bw.bodies.size());

@@ -21,7 +21,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -201,17 +200,14 @@ PeerResult runJolt(const PeerScene& scene) {
     result.heapBytes = heapInUse() - heapBefore;
 
     const float dt = float(scene.dt);
-    const auto start = std::chrono::steady_clock::now();
-    for (long step = 0; step < scene.steps; ++step) {
+    result.stepSeconds = timeSteps(scene.steps, [&] {
         const JPH::EPhysicsUpdateError error = jw.system.Update(dt, 1, &tempAllocator, &jobSystem);
         if (error != JPH::EPhysicsUpdateError::None) {
             throw PeerCapacityError("tumble peers: Jolt ran out of body pairs or contact "
                                     "constraints (EPhysicsUpdateError " +
                                     std::to_string(int(error)) + ")");
         }
-    }
-    const auto stop = std::chrono::steady_clock::now();
-    result.stepSeconds = std::chrono::duration<double>(stop - start).count();
+    });
     result.heapBytesAtEnd = heapInUse() - heapBefore;
 
     const JPH::BodyInterface& bodies = jw.system.GetBodyInterface();

@@ -7,7 +7,6 @@
 #include <mujoco/mujoco.h>
 
 #include <algorithm>
-#include <chrono>
 #include <climits>
 #include <cmath>
 #include <cstring>
@@ -226,12 +225,7 @@ PeerResult runMujoco(const PeerScene& scene) {
     setVelocities(world.model, world.data, scene);
     result.heapBytes = heapInUse() - heapBefore;
 
-    const auto start = std::chrono::steady_clock::now();
-    for (long step = 0; step < scene.steps; ++step) {
-        mj_step(world.model, world.data);
-    }
-    const auto stop = std::chrono::steady_clock::now();
-    result.stepSeconds = std::chrono::duration<double>(stop - start).count();
+    result.stepSeconds = timeSteps(scene.steps, [&] { mj_step(world.model, world.data); });
     result.heapBytesAtEnd = heapInUse() - heapBefore;
 
     const mjModel* m = world.model;

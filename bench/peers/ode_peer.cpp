@@ -6,7 +6,6 @@
 #include <ode/ode.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <sstream>
 
@@ -169,14 +168,11 @@ PeerResult runOde(const PeerScene& scene) {
     build(ow, scene);
     result.heapBytes = heapInUse() - heapBefore;
 
-    const auto start = std::chrono::steady_clock::now();
-    for (long step = 0; step < scene.steps; ++step) {
+    result.stepSeconds = timeSteps(scene.steps, [&] {
         dSpaceCollide(ow.space, &ow, &nearCallback);
         dWorldQuickStep(ow.world, scene.dt);
         dJointGroupEmpty(ow.contacts);
-    }
-    const auto stop = std::chrono::steady_clock::now();
-    result.stepSeconds = std::chrono::duration<double>(stop - start).count();
+    });
     result.heapBytesAtEnd = heapInUse() - heapBefore;
 
     result.finalPositions.reserve(ow.bodies.size());

@@ -4,9 +4,22 @@
 
 #include "peer.hpp"
 
+#include <chrono>
 #include <string>
 
 namespace tumble::bench::detail {
+
+/// Wall time (steady_clock) of `steps` calls of `step()`, s: the stepping loop alone, which is
+/// what each peer reports as PeerResult::stepSeconds.
+template <typename Step>
+double timeSteps(long steps, const Step& step)
+{
+    const auto start = std::chrono::steady_clock::now();
+    for (long i = 0; i < steps; ++i) {
+        step();
+    }
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 /// Bytes of heap in use by the whole process (glibc mallinfo2: uordblks + hblkhd), 0 elsewhere.
 long long heapInUse();

@@ -62,6 +62,28 @@ Real sideways(const Vec3& from, const Vec3& to)
     return std::hypot(to.x - from.x, to.z - from.z);
 }
 
+/// What the steps add to the bodies' energy (kinetic plus potential), summed step by step: with
+/// nothing driving the bodies it can only fall, so every rise is energy the solver created.
+struct EnergyCreated {
+    Real start = -1.0;
+    Real previous = 0.0;
+    Real created = 0.0;
+
+    void observe(const Runner& runner)
+    {
+        Real now = 0.0;
+        for (const BodyId id : runner.bodies()) {
+            now += runner.world().energyOf(runner.world().body(id));
+        }
+        if (start < 0.0) {
+            start = now;
+        } else {
+            created += std::max(0.0, now - previous);
+        }
+        previous = now;
+    }
+};
+
 TEST(ContactScenarios, TheStackOfTenStandsWithinAMillimetre)
 {
     const Finished run("stack_10.toml");
@@ -105,26 +127,14 @@ TEST(ContactScenarios, TheStackOfTwentyDroppedOntoItselfSettlesStanding)
 TEST(ContactScenarios, TheDroppedStackWithOneElasticCubeSettlesAndCreatesNoEnergy)
 {
     const std::vector<std::string> overrides{"cube19.elasticity=0.7"};
-    Real start = -1.0;
-    Real previous = 0.0;
-    Real created = 0.0;
-    const Finished run("stack_20_dropped.toml", overrides, [&](const Runner& runner) {
-        Real now = 0.0;
-        for (const BodyId id : runner.bodies()) {
-            now += runner.world().energyOf(runner.world().body(id));
-        }
-        if (start < 0.0) {
-            start = now;
-        } else {
-            created += std::max(0.0, now - previous);
-        }
-        previous = now;
-    });
+    EnergyCreated energy;
+    const Finished run("stack_20_dropped.toml", overrides,
+                       [&](const Runner& runner) { energy.observe(runner); });
     ASSERT_EQ(run.runner.bodies().size(), 20u);
     // what a step adds (the push-out while the top cubes bounce and settle, rounding) is held
     // to 1e-5 of the start, about 0.02 J of 2065 J: the run adds 2.8e-3 J, all of it between
     // 1.15 s and 1.3 s (chaotic: through World::step alone the same file adds 5.5e-4 J)
-    EXPECT_LT(created, 1e-5 * start);
+    EXPECT_LT(energy.created, 1e-5 * energy.start);
     for (std::size_t i = 0; i < run.runner.bodies().size(); ++i) {
         EXPECT_LT(glm::length(run.body(i).linearVelocity), 1e-6) << i;
         EXPECT_LT(glm::length(run.body(i).angularVelocity), 1e-6) << i;
@@ -150,31 +160,15 @@ TEST(ContactScenarios, ThePileOfOneHundredSettlesOnTheGroundAndCreatesNoEnergy)
     // the start (about 0.02 J of 22.9 kJ; the run adds about 1e-3 J). A brick flung off the
     // pile by the solver would need energy it cannot get; one that tumbles down the pile's
     // side, however far, takes none (how far is chaotic: runs have ended one 30 m out).
-    const auto energy = [](const Runner& runner) {
-        Real sum = 0.0;
-        for (const BodyId id : runner.bodies()) {
-            sum += runner.world().energyOf(runner.world().body(id));
-        }
-        return sum;
-    };
-    Real start = -1.0;
-    Real previous = 0.0;
-    Real created = 0.0;
-    Finished run("pile_100.toml", overrides, [&](const Runner& runner) {
-        const Real now = energy(runner);
-        if (start < 0.0) {
-            start = now;
-        } else {
-            created += std::max(0.0, now - previous);
-        }
-        previous = now;
-    });
+    EnergyCreated energy;
+    Finished run("pile_100.toml", overrides,
+                 [&](const Runner& runner) { energy.observe(runner); });
     ASSERT_EQ(run.runner.bodies().size(), 100u);
     for (std::size_t i = 0; i < run.runner.bodies().size(); ++i) {
         // a 2 x 6 x 2 brick rests with its centre at least its half width (1 m) up
         EXPECT_GT(run.body(i).position.y, 1.0 - 1e-3) << i;
     }
-    EXPECT_LT(created, 1e-6 * start);
+    EXPECT_LT(energy.created, 1e-6 * energy.start);
 #ifdef NDEBUG
     // The pile comes to rest. When it does is chaotic: bricks bounce (e = 0.6) on a pile
     // tilted at random, and a change in the last bits of any step can topple its end a few
