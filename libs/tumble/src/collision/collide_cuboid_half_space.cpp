@@ -16,8 +16,10 @@ PairManifold collideCuboidHalfSpace(const Transform& pose, const Vec3& halfExten
     const Real centre = glm::dot(planeNormal, pose.position - planePoint);
     const Real rounding =
         1e-12 * (glm::length(pose.position) + glm::length(planePoint) + radius);
+    PairManifold manifold;
+    manifold.normal = planeNormal;
     if (centre - radius > margin + rounding) {
-        return {};
+        return manifold;
     }
     // (4.1) for a normal n: h_i = n . (x + R p_i - p0); vertices with h_i <= margin, deepest first
     const std::array<Vec3, 8> local = cuboidVertices(halfExtents);
@@ -35,8 +37,6 @@ PairManifold collideCuboidHalfSpace(const Transform& pose, const Vec3& halfExten
             heights[at] = {height, i};
         }
     }
-    PairManifold manifold;
-    manifold.normal = planeNormal;
     // a cuboid has at most four vertices on a face; more within the margin means a face and
     // speculative vertices of the far side, of which the four deepest are the face
     manifold.pointCount = std::min(count, 4);
