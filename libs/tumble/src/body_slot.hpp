@@ -3,6 +3,7 @@
 #pragma once
 
 #include "collision/pair_geometry_cache.hpp"
+#include "step/kept_constraints.hpp"
 #include "tumble/body.hpp"
 #include "tumble/contact.hpp"
 
@@ -48,6 +49,8 @@ struct BodySlot {
     /// The box-box geometry of the pairs this body owns: with another body of higher slot, or
     /// with a static body (9.11).
     PairGeometryCache pairGeometry;
+    /// The constraints of the island this body was the lowest of in the last step (11.6a).
+    KeptConstraints kept;
 };
 
 } // namespace tumble

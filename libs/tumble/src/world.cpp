@@ -150,6 +150,7 @@ void World::destroyBody(BodyId id)
     TUMBLE_ASSERT(isValid(id));
     BodySlot& slot = m_slots[id.index];
     slot.alive = false;
+    slot.kept.release();
     ++slot.generation;
     m_freeSlots.push_back(id.index);
 }
@@ -308,6 +309,7 @@ void World::advanceBatch(std::size_t batch, Real dt)
             continue;
         }
         slot.contactCache.clear();
+        slot.kept.release();
         slot.body.ledger.impactWorkLastStep = 0.0;
         const BodyId id{static_cast<std::uint32_t>(index), slot.generation};
         if (m_settings.response == ContactResponse::Average) {

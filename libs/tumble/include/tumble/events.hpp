@@ -30,6 +30,8 @@ struct SolverStatistics {
     std::size_t substeps = 0;
     std::size_t solves = 0;
     std::size_t sweeps = 0;
+    /// Islands whose first sub-step kept the last step's constraints, unmoved (11.6a).
+    std::size_t keptIslands = 0;
 
     SolverStatistics& operator+=(const SolverStatistics& other)
     {
@@ -39,6 +41,7 @@ struct SolverStatistics {
         substeps += other.substeps;
         solves += other.solves;
         sweeps += other.sweeps;
+        keptIslands += other.keptIslands;
         return *this;
     }
 };

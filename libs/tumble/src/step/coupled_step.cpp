@@ -11,6 +11,7 @@
 #include "step/island_contacts.hpp"
 #include "step/island_events.hpp"
 #include "step/island_motion.hpp"
+#include "step/kept_constraints.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -37,13 +38,12 @@ constexpr Real kRestingConvergence = 1e-12;
 constexpr Real kRestingVelocityShare = 1e-10;
 
 /// The vectors of an island's step. Each thread keeps one set from island to island and step to
-/// step: the constraints of Jolt's pyramid take 14 MB, which a fresh vector would have the
-/// system map and zero again every step.
+/// step, so that no stage has the system map and zero fresh memory every step. The constraints
+/// (14 MB for Jolt's pyramid) are the island's own, kept by its lowest body (11.6a).
 struct IslandBuffers {
     std::vector<SolverBody> bodies;
     std::vector<IslandContact> contacts;
     std::vector<IslandContact> spareContacts;
-    std::vector<ContactConstraint> constraints;
     SweepSchedule schedule;
     BodyConstraintLists constraintsOf;
     std::vector<Real> energies;
@@ -64,8 +64,8 @@ public:
                 StepEvents& events, IslandBuffers& buffers)
         : m_island(island), m_slots(slots), m_context(context), m_settings(context.settings),
           m_events(events), m_bodies(buffers.bodies), m_contacts(buffers.contacts),
-          m_spareContacts(buffers.spareContacts),
-          m_constraints(buffers.constraints), m_schedule(buffers.schedule),
+          m_spareContacts(buffers.spareContacts), m_kept(slots[island.bodies.front()].kept),
+          m_constraints(m_kept.constraints), m_schedule(buffers.schedule),
           m_constraintsOf(buffers.constraintsOf),
           m_energies(buffers.energies), m_velocityStart(buffers.velocityStart),
           m_angularVelocityStart(buffers.angularVelocityStart), m_gapMotions(buffers.gapMotions)
@@ -76,6 +76,7 @@ public:
 
 private:
     void gatherBodies();
+    void prepareConstraints(int substep);
     void resolveImpacts(Real time);
     [[nodiscard]] std::vector<ContactConstraint> impactConstraints() const;
     void solveSubstep(Real tau);
@@ -112,7 +113,12 @@ private:
     std::vector<SolverBody>& m_bodies;
     std::vector<IslandContact>& m_contacts;
     std::vector<IslandContact>& m_spareContacts;
+    /// The island's constraints as its lowest body keeps them from step to step (11.6a).
+    KeptConstraints& m_kept;
     std::vector<ContactConstraint>& m_constraints;
+    /// Whether the next solve starts from the kept constraints' impulses rather than the cached
+    /// ones (11.6a).
+    bool m_startFromKept = false;
     /// The order of the sweeps over m_constraints (11.5c), made once a sub-step.
     SweepSchedule& m_schedule;
     BodyConstraintLists& m_constraintsOf;
@@ -149,7 +155,7 @@ void CoupledStep::run(Real dt)
         // narrow phase: every point within reach of the rest of the step
         findIslandContacts(m_island, m_slots, m_context, remaining, m_contacts);
         orderContactsByColour(m_contacts, count + 1, m_spareContacts, m_context.threads);
-        buildConstraints(m_contacts, m_slots, m_island, m_constraints, m_context.threads);
+        prepareConstraints(substep);
         m_gapMotions.clear();
         ++m_events.statistics.substeps;
         if (substep == 0) {
@@ -173,12 +179,37 @@ void CoupledStep::run(Real dt)
         // positions, push-out, warm start (11.9), (11.10)
         finishSubstep(tau);
         if (!(tau < remaining)) {
+            // (11.6a): a step of one sub-step leaves its constraints for the next
+            m_kept.valid = substep == 0;
+            m_kept.tau = tau;
             break;
         }
         m_elapsed += tau;
         if (!(m_elapsed < dt)) {
             break;
         }
+    }
+}
+
+void CoupledStep::prepareConstraints(int substep)
+{
+    // the island's other bodies keep no constraints: those of islands they led are gone
+    for (std::size_t i = 1; i < m_island.bodies.size(); ++i) {
+        m_slots[m_island.bodies[i]].kept.release();
+    }
+    // (11.6a): the first sub-step of an island whose contacts and bodies have not moved since
+    // the last step keeps its constraints
+    m_startFromKept =
+        substep == 0 && keptConstraintsHold(m_kept, m_island, m_slots, m_contacts);
+    if (m_startFromKept) {
+        refreshKeptConstraints(m_kept, m_contacts);
+        ++m_events.statistics.keptIslands;
+        return;
+    }
+    m_kept.valid = false;
+    buildConstraints(m_contacts, m_slots, m_island, m_constraints, m_context.threads);
+    if (substep == 0) {
+        recordKeptInputs(m_kept, m_island, m_slots, m_contacts);
     }
 }
 
@@ -262,6 +293,11 @@ std::vector<ContactConstraint> CoupledStep::impactConstraints() const
                                      {ConstraintTarget::Impact, 0.0, touching,
                                       m_settings.restitutionThreshold});
             prepared.targetNormalVelocity = 0.0;
+            // the impacts start from no impulse, whatever the constraints hold (11.6a)
+            prepared.normalImpulse = 0.0;
+            prepared.tangentImpulse1 = 0.0;
+            prepared.tangentImpulse2 = 0.0;
+            prepared.frictionShift = 0.0;
         }
     }
     return impact;
@@ -285,8 +321,13 @@ void CoupledStep::solveSubstep(Real tau)
     prepareConstraintTargets(m_constraints, m_bodies, targets, m_context.threads);
     keepExactArrivals(m_constraints, m_gapMotions, tau, m_settings.contactTolerance,
                       m_context.threads);
-    loadWarmStart(m_island, m_slots, m_contacts, m_constraints, tau, m_settings,
-                  m_context.threads);
+    if (m_startFromKept) {
+        startFromKeptImpulses(m_constraints, tau, m_kept.tau);
+        m_startFromKept = false;
+    } else {
+        loadWarmStart(m_island, m_slots, m_contacts, m_constraints, tau, m_settings,
+                      m_context.threads);
+    }
     scheduleSweeps(m_constraints, m_bodies, m_schedule);
     warmStart(m_constraints, m_bodies, m_schedule, m_context.threads);
     countSolve(solveConstraints(m_constraints, m_bodies, m_schedule,
