@@ -73,21 +73,30 @@ inline void applyFriction(ContactConstraint& c, SolverBody& a, SolverBody& b, Re
     c.frictionWork += change1 * along1 + change2 * along2;
 }
 
-/// Applies a point's whole cached impulse (warm starting, (11.6)); its work on the pair is
-/// booked under the normal heading as one impulse, P . (u_before + u_after) / 2 (8.2).
+/// Applies a point's whole cached impulse (warm starting, (11.6)) as one impulse P = J^T lambda:
+/// P on B's centre and its moment rB x P = sum_i lambda_i (rB x d_i) (A's opposite), so each
+/// body's velocities change once. Its work on the pair is booked under the normal heading,
+/// P . (u_before + u_after) / 2 (8.2), with P . u = P . (vB - vA) + (rB x P) . wB - (rA x P) . wA.
 inline void warmStartPoint(ContactConstraint& c, SolverBody& a, SolverBody& b)
 {
-    const std::array<Real, 3> impulses{c.normalImpulse, c.tangentImpulse1, c.tangentImpulse2};
+    const Real ln = c.normalImpulse;
+    const Real l1 = c.tangentImpulse1;
+    const Real l2 = c.tangentImpulse2;
+    const Vec3 impulse = ln * c.normal + l1 * c.tangent1 + l2 * c.tangent2;
+    const Vec3 momentA = ln * c.angularA[0] + l1 * c.angularA[1] + l2 * c.angularA[2];
+    const Vec3 momentB = ln * c.angularB[0] + l1 * c.angularB[1] + l2 * c.angularB[2];
     const auto relativeWork = [&] {
-        Real work = 0.0;
-        for (int axis = 0; axis < 3; ++axis) {
-            work += impulses[axis] * rowVelocity(c, a, b, axis);
-        }
-        return work;
+        return glm::dot(impulse, b.linearVelocity - a.linearVelocity) +
+               glm::dot(momentB, b.angularVelocity) - glm::dot(momentA, a.angularVelocity);
     };
     const Real before = relativeWork();
-    for (int axis = 0; axis < 3; ++axis) {
-        applyAlong(c, a, b, directionOf(c, axis), axis, impulses[axis]);
+    if (!isFixed(a)) {
+        a.linearVelocity -= a.invMass * impulse;
+        a.angularVelocity -= ln * c.responseA[0] + l1 * c.responseA[1] + l2 * c.responseA[2];
+    }
+    if (!isFixed(b)) {
+        b.linearVelocity += b.invMass * impulse;
+        b.angularVelocity += ln * c.responseB[0] + l1 * c.responseB[1] + l2 * c.responseB[2];
     }
     c.normalWork += 0.5 * (before + relativeWork());
 }
