@@ -199,17 +199,17 @@ void CoupledStep::prepareConstraints(int substep)
     }
     // (11.6a): the first sub-step of an island whose contacts and bodies have not moved since
     // the last step keeps its constraints
-    m_startFromKept =
-        substep == 0 && keptConstraintsHold(m_kept, m_island, m_slots, m_contacts);
+    m_startFromKept = substep == 0 && keptConstraintsHold(m_kept, m_island, m_slots, m_contacts,
+                                                          m_context.threads);
     if (m_startFromKept) {
-        refreshKeptConstraints(m_kept, m_contacts);
+        refreshKeptConstraints(m_kept, m_contacts, m_context.threads);
         ++m_events.statistics.keptIslands;
         return;
     }
     m_kept.valid = false;
     buildConstraints(m_contacts, m_slots, m_island, m_constraints, m_context.threads);
     if (substep == 0) {
-        recordKeptInputs(m_kept, m_island, m_slots, m_contacts);
+        recordKeptInputs(m_kept, m_island, m_slots, m_contacts, m_context.threads);
     }
 }
 
@@ -322,7 +322,7 @@ void CoupledStep::solveSubstep(Real tau)
     keepExactArrivals(m_constraints, m_gapMotions, tau, m_settings.contactTolerance,
                       m_context.threads);
     if (m_startFromKept) {
-        startFromKeptImpulses(m_constraints, tau, m_kept.tau);
+        startFromKeptImpulses(m_constraints, tau, m_kept.tau, m_context.threads);
         m_startFromKept = false;
     } else {
         loadWarmStart(m_island, m_slots, m_contacts, m_constraints, tau, m_settings,

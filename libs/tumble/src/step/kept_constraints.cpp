@@ -3,6 +3,7 @@
 
 #include "body_slot.hpp"
 #include "dynamics/friction_cone.hpp"
+#include "parallel_for.hpp"
 #include "step/island_contacts.hpp"
 
 #include <algorithm>
@@ -73,47 +74,49 @@ void followPointOrder(KeptContactInput& input, const PairManifold& now,
 } // namespace
 
 bool keptConstraintsHold(const KeptConstraints& kept, const CoupledIsland& island,
-                         std::span<const BodySlot> slots, std::span<const IslandContact> contacts)
+                         std::span<const BodySlot> slots, std::span<const IslandContact> contacts,
+                         int threads)
 {
     if (!kept.valid || kept.bodies != island.bodies ||
         kept.contactInputs.size() != contacts.size()) {
         return false;
     }
-    for (std::size_t i = 0; i < island.bodies.size(); ++i) {
-        if (!bodyHolds(kept.bodyInputs[i], slots[island.bodies[i]].body)) {
-            return false;
-        }
-    }
-    for (std::size_t k = 0; k < contacts.size(); ++k) {
-        if (!contactHolds(kept.contactInputs[k], contacts[k])) {
-            return false;
-        }
-    }
-    return true;
+    const bool bodyMoved = parallelAnyOf(island.bodies.size(), threads, [&](std::size_t i) {
+        return !bodyHolds(kept.bodyInputs[i], slots[island.bodies[i]].body);
+    });
+    return !bodyMoved && !parallelAnyOf(contacts.size(), threads, [&](std::size_t k) {
+        return !contactHolds(kept.contactInputs[k], contacts[k]);
+    });
 }
 
 void recordKeptInputs(KeptConstraints& kept, const CoupledIsland& island,
-                      std::span<const BodySlot> slots, std::span<const IslandContact> contacts)
+                      std::span<const BodySlot> slots, std::span<const IslandContact> contacts,
+                      int threads)
 {
     kept.valid = false;
     kept.bodies = island.bodies;
     kept.bodyInputs.resize(island.bodies.size());
-    for (std::size_t i = 0; i < island.bodies.size(); ++i) {
+    parallelFor(island.bodies.size(), threads, [&](std::size_t i) {
         kept.bodyInputs[i] = inputOf(slots[island.bodies[i]].body);
-    }
+    });
     kept.contactInputs.resize(contacts.size());
-    for (std::size_t k = 0; k < contacts.size(); ++k) {
+    parallelFor(contacts.size(), threads, [&](std::size_t k) {
         kept.contactInputs[k] = {contacts[k].sideA, contacts[k].sideB, contacts[k].manifold};
-    }
+    });
 }
 
-void refreshKeptConstraints(KeptConstraints& kept, std::span<IslandContact> contacts)
+void refreshKeptConstraints(KeptConstraints& kept, std::span<IslandContact> contacts, int threads)
 {
     std::span<ContactConstraint> constraints = kept.constraints;
-    std::uint32_t first = 0;
-    for (std::size_t index = 0; index < contacts.size(); ++index) {
-        IslandContact& contact = contacts[index];
-        contact.firstConstraint = first;
+    std::uint32_t points = 0;
+    for (IslandContact& contact : contacts) {
+        contact.firstConstraint = points;
+        points += static_cast<std::uint32_t>(contact.manifold.pointCount);
+    }
+    // each contact writes only its own constraints and its own recorded points
+    parallelFor(contacts.size(), threads, [&](std::size_t index) {
+        const IslandContact& contact = contacts[index];
+        const std::uint32_t first = contact.firstConstraint;
         KeptContactInput& input = kept.contactInputs[index];
         const auto count = static_cast<std::size_t>(contact.manifold.pointCount);
         bool sameOrder = true;
@@ -130,23 +133,24 @@ void refreshKeptConstraints(KeptConstraints& kept, std::span<IslandContact> cont
             c.staticFriction = contact.staticFriction;
             c.restitution = contact.restitution;
         }
-        first += static_cast<std::uint32_t>(contact.manifold.pointCount);
-    }
+    });
 }
 
-void startFromKeptImpulses(std::span<ContactConstraint> constraints, Real tau, Real keptTau)
+void startFromKeptImpulses(std::span<ContactConstraint> constraints, Real tau, Real keptTau,
+                           int threads)
 {
     // as (11.6) starts from cached impulses: scaled down to a shorter sub-step, never up, and
     // kept in the cone of the coefficient the targets chose
     const Real shorter = std::min(1.0, tau / keptTau);
-    for (ContactConstraint& c : constraints) {
+    parallelFor(constraints.size(), threads, [&](std::size_t k) {
+        ContactConstraint& c = constraints[k];
         c.normalImpulse = std::max(0.0, shorter * c.normalImpulse);
         const FrictionImpulse inCone =
             scaledIntoDisc(shorter * c.tangentImpulse1, shorter * c.tangentImpulse2,
                            c.friction * c.normalImpulse);
         c.tangentImpulse1 = inCone.impulse1;
         c.tangentImpulse2 = inCone.impulse2;
-    }
+    });
 }
 
 } // namespace tumble

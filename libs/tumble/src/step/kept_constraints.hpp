@@ -58,25 +58,30 @@ struct KeptConstraints {
     }
 };
 
+/// Each of these spreads its work over `threads` threads, with the same result for any number.
+
 /// Whether `kept` holds constraints prepared for this island's bodies and `contacts` (the same
 /// contacts in the same order, each with the same sides and point ids, the points in any order)
 /// with every input still within (11.6a) of its value then.
 bool keptConstraintsHold(const KeptConstraints& kept, const CoupledIsland& island,
-                         std::span<const BodySlot> slots,
-                         std::span<const IslandContact> contacts);
+                         std::span<const BodySlot> slots, std::span<const IslandContact> contacts,
+                         int threads = 1);
 
 /// Records the inputs the island's constraints are being prepared from now; `kept` is invalid
 /// until markKept.
 void recordKeptInputs(KeptConstraints& kept, const CoupledIsland& island,
-                      std::span<const BodySlot> slots, std::span<const IslandContact> contacts);
+                      std::span<const BodySlot> slots, std::span<const IslandContact> contacts,
+                      int threads = 1);
 
 /// Sets the kept constraints to the contacts found now (those keptConstraintsHold accepted): each
 /// contact's first constraint, its points in the order found now, each point's gap and the
 /// pair's material.
-void refreshKeptConstraints(KeptConstraints& kept, std::span<IslandContact> contacts);
+void refreshKeptConstraints(KeptConstraints& kept, std::span<IslandContact> contacts,
+                            int threads = 1);
 
 /// (11.6) for kept constraints: impulses scaled by min(1, tau / keptTau) and the friction clamped
 /// to the cone of each point's coefficient (set with its targets).
-void startFromKeptImpulses(std::span<ContactConstraint> constraints, Real tau, Real keptTau);
+void startFromKeptImpulses(std::span<ContactConstraint> constraints, Real tau, Real keptTau,
+                           int threads = 1);
 
 } // namespace tumble
