@@ -3,6 +3,7 @@
 #pragma once
 
 #include "dynamics/contact_constraint.hpp"
+#include "dynamics/friction_cone.hpp"
 
 #include <array>
 
@@ -71,6 +72,16 @@ inline void applyFriction(ContactConstraint& c, SolverBody& a, SolverBody& b, Re
     const Real along2 = velocities[3] - velocities[1] +
                         0.5 * (c.tangentK[2] * change1 + c.tangentK[3] * change2);
     c.frictionWork += change1 * along1 + change2 * along2;
+}
+
+/// Sets a constraint's starting impulses (warm starting, (11.6)): the normal one, and the friction
+/// one along t1, t2 kept in the cone of the point's coefficient (set with its targets) (6.2).
+inline void startInCone(ContactConstraint& c, Real normal, Real tangent1, Real tangent2)
+{
+    c.normalImpulse = normal;
+    const FrictionImpulse inCone = scaledIntoDisc(tangent1, tangent2, c.friction * normal);
+    c.tangentImpulse1 = inCone.impulse1;
+    c.tangentImpulse2 = inCone.impulse2;
 }
 
 /// Applies a point's whole cached impulse (warm starting, (11.6)) as one impulse P = J^T lambda:

@@ -2,9 +2,9 @@
 #include "step/island_motion.hpp"
 
 #include "body_state.hpp"
-#include "dynamics/friction_cone.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/island_solver.hpp"
+#include "dynamics/point_impulses.hpp"
 #include "parallel_for.hpp"
 #include "step/owner_groups.hpp"
 #include "step/resting_load_guess.hpp"
@@ -92,13 +92,9 @@ void startFrom(ContactConstraint& c, const CachedContactPoint& cached, Real tau)
     // scaled down to a shorter sub-step, never up: a short sub-step's impulse is mostly the
     // stopping of an approach, not a force that lasts (11.6)
     const Real shorter = std::min(1.0, tau / cached.tau);
-    c.normalImpulse = shorter * cached.normalImpulse;
     const Vec3 friction = shorter * cached.frictionImpulse;
-    const FrictionImpulse inCone =
-        scaledIntoDisc(glm::dot(c.tangent1, friction), glm::dot(c.tangent2, friction),
-                       c.friction * c.normalImpulse);
-    c.tangentImpulse1 = inCone.impulse1;
-    c.tangentImpulse2 = inCone.impulse2;
+    startInCone(c, shorter * cached.normalImpulse, glm::dot(c.tangent1, friction),
+                glm::dot(c.tangent2, friction));
 }
 
 } // namespace

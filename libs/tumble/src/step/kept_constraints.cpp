@@ -2,7 +2,7 @@
 #include "step/kept_constraints.hpp"
 
 #include "body_slot.hpp"
-#include "dynamics/friction_cone.hpp"
+#include "dynamics/point_impulses.hpp"
 #include "parallel_for.hpp"
 #include "step/island_contacts.hpp"
 
@@ -144,12 +144,8 @@ void startFromKeptImpulses(std::span<ContactConstraint> constraints, Real tau, R
     const Real shorter = std::min(1.0, tau / keptTau);
     parallelFor(constraints.size(), threads, [&](std::size_t k) {
         ContactConstraint& c = constraints[k];
-        c.normalImpulse = std::max(0.0, shorter * c.normalImpulse);
-        const FrictionImpulse inCone =
-            scaledIntoDisc(shorter * c.tangentImpulse1, shorter * c.tangentImpulse2,
-                           c.friction * c.normalImpulse);
-        c.tangentImpulse1 = inCone.impulse1;
-        c.tangentImpulse2 = inCone.impulse2;
+        startInCone(c, shorter * c.normalImpulse, shorter * c.tangentImpulse1,
+                    shorter * c.tangentImpulse2);
     });
 }
 

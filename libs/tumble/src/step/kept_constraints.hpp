@@ -67,8 +67,8 @@ bool keptConstraintsHold(const KeptConstraints& kept, const CoupledIsland& islan
                          std::span<const BodySlot> slots, std::span<const IslandContact> contacts,
                          int threads = 1);
 
-/// Records the inputs the island's constraints are being prepared from now; `kept` is invalid
-/// until markKept.
+/// Records the inputs the island's constraints are being prepared from now; `kept` stays invalid
+/// until a step that prepared them ends after one sub-step.
 void recordKeptInputs(KeptConstraints& kept, const CoupledIsland& island,
                       std::span<const BodySlot> slots, std::span<const IslandContact> contacts,
                       int threads = 1);
