@@ -29,6 +29,20 @@ constexpr std::size_t kEntriesPerShare = 128;
 /// roughly n log2 n comparisons of std::sort) are all that the kept order costs.
 constexpr std::size_t kInsertionMovesPerEntry = 2;
 
+/// Each box is swept grown by this share of its largest side on every side, so a box that moves
+/// by less keeps the last sweep's pairs: a resting body, which moves by rounding, never leaves
+/// its grown box, while the sweep meets only a few more candidates than with the boxes
+/// themselves.
+constexpr Real kGrowthShare = 1.0 / 64.0;
+
+/// Whether `inner` lies in the closed box `outer`.
+bool contains(const Aabb& outer, const Aabb& inner)
+{
+    return outer.min.x <= inner.min.x && outer.min.y <= inner.min.y &&
+           outer.min.z <= inner.min.z && inner.max.x <= outer.max.x &&
+           inner.max.y <= outer.max.y && inner.max.z <= outer.max.z;
+}
+
 } // namespace
 
 int axisOfLargestSpread(std::span<const BroadPhaseProxy> proxies)
@@ -58,9 +72,50 @@ int axisOfLargestSpread(std::span<const BroadPhaseProxy> proxies)
 
 void BroadPhase::update(std::span<const BroadPhaseProxy> proxies, int threads)
 {
-    refreshEntries(proxies, axisOfLargestSpread(proxies));
-    sortEntries();
-    sweep(threads);
+    // (10.3a): the grown boxes' pairs hold every overlapping pair while each box stays in its
+    // grown box, so they are swept again only when one leaves
+    m_sweptLastUpdate = !grownBoxesHold(proxies);
+    if (m_sweptLastUpdate) {
+        growBoxes(proxies);
+        refreshEntries(m_grown, axisOfLargestSpread(m_grown));
+        sortEntries();
+        sweep(threads);
+    }
+    keepOverlapping(proxies);
+}
+
+bool BroadPhase::grownBoxesHold(std::span<const BroadPhaseProxy> proxies) const
+{
+    if (m_grown.size() != proxies.size()) {
+        return false;
+    }
+    for (std::size_t i = 0; i < proxies.size(); ++i) {
+        // a proxy that became movable (or static) pairs with boxes its old kind skipped
+        if (m_grown[i].movable != proxies[i].movable || !contains(m_grown[i].box, proxies[i].box)) {
+            return false;
+        }
+    }
+    return true;
+}
+
+void BroadPhase::growBoxes(std::span<const BroadPhaseProxy> proxies)
+{
+    m_grown.assign(proxies.begin(), proxies.end());
+    for (BroadPhaseProxy& proxy : m_grown) {
+        const Vec3 size = proxy.box.max - proxy.box.min;
+        proxy.box = expanded(proxy.box, kGrowthShare * std::max({size.x, size.y, size.z}));
+    }
+}
+
+void BroadPhase::keepOverlapping(std::span<const BroadPhaseProxy> proxies)
+{
+    // the grown pairs are sorted and distinct, so the pairs kept are too
+    m_pairs.clear();
+    for (const ProxyPair& pair : m_grownPairs) {
+        if (overlaps(proxies[pair.a].box, proxies[pair.b].box)) {
+            m_pairs.push_back(pair);
+        }
+    }
 }
 
 void BroadPhase::refreshEntries(std::span<const BroadPhaseProxy> proxies, int axis)
@@ -137,12 +192,12 @@ void BroadPhase::sweepFrom(std::size_t begin, std::size_t end,
 
 void BroadPhase::sweep(int threads)
 {
-    m_pairs.clear();
+    m_grownPairs.clear();
     const std::size_t count = m_entries.size();
     // the pairs in proxy order, not sweep order, so they depend on the proxies alone
     if (threads <= 1 || count < kEntriesPerShare * static_cast<std::size_t>(threads)) {
-        sweepFrom(0, count, m_pairs);
-        std::sort(m_pairs.begin(), m_pairs.end());
+        sweepFrom(0, count, m_grownPairs);
+        std::sort(m_grownPairs.begin(), m_grownPairs.end());
         return;
     }
     // each share of the sorted entries finds and sorts the pairs of its first boxes; as many
@@ -158,13 +213,13 @@ void BroadPhase::sweep(int threads)
     });
     m_shareEnds.assign(1, 0);
     for (const std::vector<ProxyPair>& pairs : m_sharePairs) {
-        m_pairs.insert(m_pairs.end(), pairs.begin(), pairs.end());
-        m_shareEnds.push_back(m_pairs.size());
+        m_grownPairs.insert(m_grownPairs.end(), pairs.begin(), pairs.end());
+        m_shareEnds.push_back(m_grownPairs.size());
     }
     // neighbouring sorted runs merged level by level, each level's merges over the threads,
     // between the pairs and a kept buffer (no allocation once both have grown)
-    m_mergedPairs.resize(m_pairs.size());
-    std::vector<ProxyPair>* from = &m_pairs;
+    m_mergedPairs.resize(m_grownPairs.size());
+    std::vector<ProxyPair>* from = &m_grownPairs;
     std::vector<ProxyPair>* to = &m_mergedPairs;
     for (std::size_t width = 1; width < shares; width *= 2) {
         const std::size_t merges = (shares + 2 * width - 1) / (2 * width);
@@ -180,8 +235,8 @@ void BroadPhase::sweep(int threads)
         });
         std::swap(from, to);
     }
-    if (from != &m_pairs) {
-        std::copy(from->begin(), from->end(), m_pairs.begin());
+    if (from != &m_grownPairs) {
+        std::copy(from->begin(), from->end(), m_grownPairs.begin());
     }
 }
 

@@ -28,9 +28,11 @@ struct ProxyPair {
     friend auto operator<=>(const ProxyPair&, const ProxyPair&) = default;
 };
 
-/// Finds the overlapping pairs of a span of proxies. The proxies are sorted along one axis by
-/// the low end of their boxes and swept; the order is kept, so when the boxes barely move the
-/// next sort is an insertion sort of near-linear cost. The result depends only on the proxies.
+/// Finds the overlapping pairs of a span of proxies. The proxies' boxes, grown by a share of
+/// their size, are sorted along one axis by their low end and swept; the order is kept, so when
+/// the boxes barely move the next sort is an insertion sort of near-linear cost. While every
+/// box stays inside its grown box and no proxy changes its kind, the grown boxes' pairs are
+/// kept and only tested again on the boxes themselves. The result depends only on the proxies.
 class BroadPhase {
 public:
     /// Finds the pairs of `proxies` whose boxes overlap (touching counts) and of which at least
@@ -42,6 +44,9 @@ public:
 
     /// The world axis (0, 1, 2) of the last sweep: the one of largest spread of the box centres.
     int sweepAxis() const { return m_axis; }
+    /// Whether the last update swept the boxes again, rather than keeping the grown boxes'
+    /// pairs.
+    bool sweptLastUpdate() const { return m_sweptLastUpdate; }
 
 private:
     /// A proxy's box and flags, copied in sweep order so the sweep reads memory in sequence.
@@ -51,6 +56,9 @@ private:
         bool movable = true;
     };
 
+    [[nodiscard]] bool grownBoxesHold(std::span<const BroadPhaseProxy> proxies) const;
+    void growBoxes(std::span<const BroadPhaseProxy> proxies);
+    void keepOverlapping(std::span<const BroadPhaseProxy> proxies);
     void refreshEntries(std::span<const BroadPhaseProxy> proxies, int axis);
     void sortEntries();
     void sortFromScratch();
@@ -58,7 +66,12 @@ private:
     void sweepFrom(std::size_t begin, std::size_t end, std::vector<ProxyPair>& pairs) const;
 
     std::vector<Entry> m_entries;
+    /// The proxies of the last sweep, each box grown by kGrowthShare of its largest side.
+    std::vector<BroadPhaseProxy> m_grown;
+    /// The pairs of the grown boxes: a superset of the pairs while each box stays in its own.
+    std::vector<ProxyPair> m_grownPairs;
     std::vector<ProxyPair> m_pairs;
+    bool m_sweptLastUpdate = false;
     /// The pairs found from each share of the sorted entries, when the sweep is shared.
     std::vector<std::vector<ProxyPair>> m_sharePairs;
     /// Where each share's sorted pairs end in m_pairs, after a 0, while they are merged.
