@@ -288,6 +288,25 @@ void warmStart(std::span<ContactConstraint> constraints, std::span<SolverBody> b
                  });
 }
 
+void warmStartScaled(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
+                     const SweepSchedule& schedule, Real scale, int threads)
+{
+    const auto startAndApply = [scale](ContactConstraint& c, SolverBody& a, SolverBody& b,
+                                       SweepMaxima&) {
+        startInCone(c, scale * c.normalImpulse, scale * c.tangentImpulse1,
+                    scale * c.tangentImpulse2);
+        warmStartPoint(c, a, b);
+    };
+    if (!schedule.coloured) {
+        SweepMaxima unused;
+        for (ContactConstraint& c : constraints) {
+            startAndApply(c, bodies[c.bodyA], bodies[c.bodyB], unused);
+        }
+        return;
+    }
+    colouredPass(schedule, constraints, bodies, threads, startAndApply);
+}
+
 void prepareConstraintTargets(std::span<ContactConstraint> constraints,
                               std::span<const SolverBody> bodies,
                               const ConstraintTargetSettings& settings, int threads)

@@ -84,6 +84,12 @@ void warmStart(std::span<ContactConstraint> constraints, std::span<SolverBody> b
 void warmStart(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
                const SweepSchedule& schedule, int threads);
 
+/// warmStart of kept constraints (11.6a): each point's impulses are first scaled by `scale`
+/// (at most 1) and its friction put back in the cone of its coefficient (set with its targets),
+/// in the same pass, as (11.6) starts from cached impulses.
+void warmStartScaled(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
+                     const SweepSchedule& schedule, Real scale, int threads);
+
 /// Gauss-Seidel sweeps of normal (11.4) then friction (11.5) impulses with accumulated clamping,
 /// until no impulse changes by more than `convergence` times the largest, or no point's velocity
 /// is corrected by more than `velocityTolerance` (m/s) in a sweep (11.5a), or `iterations`

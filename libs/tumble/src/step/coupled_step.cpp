@@ -321,15 +321,17 @@ void CoupledStep::solveSubstep(Real tau)
     prepareConstraintTargets(m_constraints, m_bodies, targets, m_context.threads);
     keepExactArrivals(m_constraints, m_gapMotions, tau, m_settings.contactTolerance,
                       m_context.threads);
+    scheduleSweeps(m_constraints, m_bodies, m_schedule);
     if (m_startFromKept) {
-        startFromKeptImpulses(m_constraints, tau, m_kept.tau, m_context.threads);
+        // (11.6a): the kept impulses, scaled down to a shorter sub-step, never up, as they apply
+        warmStartScaled(m_constraints, m_bodies, m_schedule, std::min(1.0, tau / m_kept.tau),
+                        m_context.threads);
         m_startFromKept = false;
     } else {
         loadWarmStart(m_island, m_slots, m_contacts, m_constraints, tau, m_settings,
                       m_context.threads);
+        warmStart(m_constraints, m_bodies, m_schedule, m_context.threads);
     }
-    scheduleSweeps(m_constraints, m_bodies, m_schedule);
-    warmStart(m_constraints, m_bodies, m_schedule, m_context.threads);
     countSolve(solveConstraints(m_constraints, m_bodies, m_schedule,
                                 m_settings.solverIterations, kRestingConvergence,
                                 restingVelocityTolerance(tau), m_context.threads));

@@ -2,7 +2,6 @@
 #include "step/kept_constraints.hpp"
 
 #include "body_slot.hpp"
-#include "dynamics/point_impulses.hpp"
 #include "parallel_for.hpp"
 #include "step/island_contacts.hpp"
 
@@ -133,19 +132,6 @@ void refreshKeptConstraints(KeptConstraints& kept, std::span<IslandContact> cont
             c.staticFriction = contact.staticFriction;
             c.restitution = contact.restitution;
         }
-    });
-}
-
-void startFromKeptImpulses(std::span<ContactConstraint> constraints, Real tau, Real keptTau,
-                           int threads)
-{
-    // as (11.6) starts from cached impulses: scaled down to a shorter sub-step, never up, and
-    // kept in the cone of the coefficient the targets chose
-    const Real shorter = std::min(1.0, tau / keptTau);
-    parallelFor(constraints.size(), threads, [&](std::size_t k) {
-        ContactConstraint& c = constraints[k];
-        startInCone(c, shorter * c.normalImpulse, shorter * c.tangentImpulse1,
-                    shorter * c.tangentImpulse2);
     });
 }
 

@@ -79,9 +79,4 @@ void recordKeptInputs(KeptConstraints& kept, const CoupledIsland& island,
 void refreshKeptConstraints(KeptConstraints& kept, std::span<IslandContact> contacts,
                             int threads = 1);
 
-/// (11.6) for kept constraints: impulses scaled by min(1, tau / keptTau) and the friction clamped
-/// to the cone of each point's coefficient (set with its targets).
-void startFromKeptImpulses(std::span<ContactConstraint> constraints, Real tau, Real keptTau,
-                           int threads = 1);
-
 } // namespace tumble
