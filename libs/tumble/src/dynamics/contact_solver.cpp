@@ -63,6 +63,48 @@ void restartFromZero(PreparedSolve& solve)
     }
 }
 
+/// The resting solve's objective less its value at no impulse, f(lambda) - f(0) = T - T(0) -
+/// lambda_n . t (5.12), from the body's kinetic energy now and `freeKinetic` = T(0).
+Real restingObjective(const PreparedSolve& solve, const Body& body, Real freeKinetic)
+{
+    Real targetsWork = 0.0;
+    for (int i = 0; i < solve.count; ++i) {
+        targetsWork += solve.points[i].normalImpulse * solve.points[i].targetNormalVelocity;
+    }
+    return body.kineticEnergy() - freeKinetic - targetsWork;
+}
+
+/// (5.12a): the impulses without friction are admissible, so a solve whose objective ends above
+/// theirs did not converge (a stalled or capped solve that friction led astray); the
+/// frictionless solution is kept then.
+void keepNoWorseThanFrictionless(PreparedSolve& solve, Body& body, const Vec3& freeVelocity,
+                                 const Vec3& freeAngularVelocity, int iterations)
+{
+    const Vec3 solvedVelocity = body.linearVelocity;
+    const Vec3 solvedAngularVelocity = body.angularVelocity;
+    const std::array<SolverPoint, 8> solved = solve.points;
+    body.linearVelocity = freeVelocity;
+    body.angularVelocity = freeAngularVelocity;
+    const Real freeKinetic = body.kineticEnergy();
+    body.linearVelocity = solvedVelocity;
+    body.angularVelocity = solvedAngularVelocity;
+    const Real solvedObjective = restingObjective(solve, body, freeKinetic);
+    body.linearVelocity = freeVelocity;
+    body.angularVelocity = freeAngularVelocity;
+    restartFromZero(solve);
+    for (int i = 0; i < solve.count; ++i) {
+        solve.points[i].friction = 0.0;
+    }
+    solvePoints(body, solve.frame, std::span(solve.points.data(), solve.count), 1.0, iterations,
+                kRestingConvergence, false);
+    const Real frictionlessObjective = restingObjective(solve, body, freeKinetic);
+    if (solvedObjective <= frictionlessObjective + 1e-12 * freeKinetic) {
+        body.linearVelocity = solvedVelocity;
+        body.angularVelocity = solvedAngularVelocity;
+        solve.points = solved;
+    }
+}
+
 /// Copies the accumulated impulses into the manifold and sums them into the outcome.
 void publish(const PreparedSolve& solve, const Body& body, ContactManifold& manifold,
              ImpactOutcome& outcome)
@@ -162,6 +204,7 @@ ContactWork solveRestingContact(Body& body, ContactManifold& manifold,
     // static coefficient.
     PreparedSolve solve;
     prepare(solve, body, manifold, 0.0, settings.restitutionThreshold);
+    const Real kineticBeforeGravity = body.kineticEnergy();
     body.linearVelocity += gravityImpulsePerMass;
     if (solve.count == 0) {
         return ContactWork{};
@@ -176,8 +219,8 @@ ContactWork solveRestingContact(Body& body, ContactManifold& manifold,
     const Vec3 freeAngularVelocity = body.angularVelocity;
     // (5.12): with targets <= 0 the solution never has more kinetic energy than the body had
     // without contact; rounding aside, more means the solve did not reach it.
-    const Real allowed =
-        body.kineticEnergy() * (1.0 + 1e-12) + std::numeric_limits<Real>::min();
+    const Real freeKinetic = body.kineticEnergy();
+    const Real allowed = freeKinetic * (1.0 + 1e-12) + std::numeric_limits<Real>::min();
     for (int i = 0; i < solve.count; ++i) {
         SolverPoint& point = solve.points[i];
         // (5.10): start from last step's impulse rates at this vertex, inside the cone.
@@ -216,6 +259,13 @@ ContactWork solveRestingContact(Body& body, ContactManifold& manifold,
         }
         solvePoints(body, solve.frame, std::span(solve.points.data(), solve.count), 1.0,
                     settings.iterations, kRestingConvergence, false);
+    }
+    // (5.12a): more kinetic energy than before gravity acted (beyond rounding of T(0)) is
+    // possible, a slide down a slope, but then the solve must do no worse on its objective
+    // than the frictionless one
+    if (body.kineticEnergy() > kineticBeforeGravity + 1e-12 * freeKinetic) {
+        keepNoWorseThanFrictionless(solve, body, freeVelocity, freeAngularVelocity,
+                                    settings.iterations);
     }
     ImpactOutcome outcome;
     publish(solve, body, manifold, outcome);
