@@ -78,16 +78,12 @@ Real restingObjective(const PreparedSolve& solve, const Body& body, Real freeKin
 /// theirs did not converge (a stalled or capped solve that friction led astray); the
 /// frictionless solution is kept then.
 void keepNoWorseThanFrictionless(PreparedSolve& solve, Body& body, const Vec3& freeVelocity,
-                                 const Vec3& freeAngularVelocity, int iterations)
+                                 const Vec3& freeAngularVelocity, Real freeKinetic,
+                                 int iterations)
 {
     const Vec3 solvedVelocity = body.linearVelocity;
     const Vec3 solvedAngularVelocity = body.angularVelocity;
     const std::array<SolverPoint, 8> solved = solve.points;
-    body.linearVelocity = freeVelocity;
-    body.angularVelocity = freeAngularVelocity;
-    const Real freeKinetic = body.kineticEnergy();
-    body.linearVelocity = solvedVelocity;
-    body.angularVelocity = solvedAngularVelocity;
     const Real solvedObjective = restingObjective(solve, body, freeKinetic);
     body.linearVelocity = freeVelocity;
     body.angularVelocity = freeAngularVelocity;
@@ -264,7 +260,7 @@ ContactWork solveRestingContact(Body& body, ContactManifold& manifold,
     // possible, a slide down a slope, but then the solve must do no worse on its objective
     // than the frictionless one
     if (body.kineticEnergy() > kineticBeforeGravity + 1e-12 * freeKinetic) {
-        keepNoWorseThanFrictionless(solve, body, freeVelocity, freeAngularVelocity,
+        keepNoWorseThanFrictionless(solve, body, freeVelocity, freeAngularVelocity, freeKinetic,
                                     settings.iterations);
     }
     ImpactOutcome outcome;
