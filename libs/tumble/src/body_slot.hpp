@@ -7,6 +7,7 @@
 #include "tumble/body.hpp"
 #include "tumble/contact.hpp"
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -25,6 +26,21 @@ struct CachedContactPoint {
     Real normalImpulse = 0.0;
     Vec3 frictionImpulse{0.0};
     Real tau = 0.0;
+};
+
+/// Last step's impulses of one contact of the soft step (docs/physics/12-soft-step.md, (12.5)),
+/// kept by the contact's owner as for CachedContactPoint: the normal impulse of each point by
+/// its feature key, and the manifold's friction impulse (world frame) and twist impulse.
+struct CachedSoftContact {
+    std::uint32_t other = 0;
+    int pointCount = 0;
+    std::array<std::uint32_t, 4> ids{};
+    /// Where each point was in the owner's body frame, m: a point whose features changed name
+    /// without moving (a tie in the clipping) is found by it, as in (11.6).
+    std::array<Vec3, 4> localPositions{};
+    std::array<Real, 4> normalImpulses{};
+    Vec3 frictionImpulse{0.0};
+    Real twistImpulse = 0.0;
 };
 
 /// Side keys of the static half-spaces in CachedContactPoint::other.
@@ -46,6 +62,8 @@ struct BodySlot {
     bool coupled = false;
     /// Last step's impulses of the contacts this body owns in the island solver.
     std::vector<CachedContactPoint> contactCache;
+    /// Last step's impulses of the soft step's contacts this body owns.
+    std::vector<CachedSoftContact> softContacts;
     /// The box-box geometry of the pairs this body owns: with another body of higher slot, or
     /// with a static body (9.11).
     PairGeometryCache pairGeometry;

@@ -142,6 +142,7 @@ BodyId World::createBody(const BodyDef& def)
     slot.alive = true;
     slot.touchingGround = false;
     slot.warmStart = WarmStartCache{};
+    slot.softContacts.clear();
     return BodyId{index, slot.generation};
 }
 
@@ -309,6 +310,7 @@ void World::advanceBatch(std::size_t batch, Real dt)
             continue;
         }
         slot.contactCache.clear();
+        slot.softContacts.clear();
         slot.kept.release();
         slot.body.ledger.impactWorkLastStep = 0.0;
         const BodyId id{static_cast<std::uint32_t>(index), slot.generation};

@@ -8,6 +8,7 @@
 #include "parallel_for.hpp"
 #include "step/coupled_step.hpp"
 #include "step/island_contacts.hpp"
+#include "step/soft_step.hpp"
 #include "step/step_scratch.hpp"
 
 #include <algorithm>
@@ -190,7 +191,11 @@ void World::advanceCoupledIslands(detail::StepScratch& scratch, Real dt)
         for (const std::uint32_t body : island.bodies) {
             m_slots[body].body.ledger.impactWorkLastStep = 0.0;
         }
-        advanceCoupled(island, m_slots, used, dt, events);
+        if (m_settings.solver == ContactSolver::Soft) {
+            advanceSoft(island, m_slots, used, dt, events);
+        } else {
+            advanceCoupled(island, m_slots, used, dt, events);
+        }
         updateIslandRest(island.bodies, m_slots, used, dt, events);
     };
     // (11.5c): a large island takes all the threads inside its step, one island after the

@@ -28,6 +28,17 @@ enum class ContactResponse : std::uint8_t {
     Average,
 };
 
+/// How the islands of touching bodies are solved (a body alone with the ground always takes the
+/// exact path of docs/physics/04..07).
+enum class ContactSolver : std::uint8_t {
+    /// Impacts in time order, sub-steps cut at arrivals, resting contact solved to a tolerance
+    /// (docs/physics/11-island-solver.md). The default.
+    Exact,
+    /// Fixed sub-steps of one soft, biased solve and one relax pass, restitution after them
+    /// (docs/physics/12-soft-step.md): a fixed cost a step, for games and tools.
+    Soft,
+};
+
 /// World-level tunables. Every default is the one a scenario file gets when it omits the key.
 struct WorldSettings {
     /// Gravitational acceleration, m/s^2. Default (0, -9.81, 0).
@@ -44,6 +55,16 @@ struct WorldSettings {
     /// Most Gauss-Seidel sweeps per contact solve; a solve stops earlier once it has converged.
     /// Default 256 (a solve on the verge of sliding converges slowly; see docs/validation.md).
     int solverIterations = 256;
+    /// Default ContactSolver::Exact.
+    ContactSolver solver = ContactSolver::Exact;
+    /// The soft step's sub-steps per step. Default 4.
+    int softSubsteps = 4;
+    /// The soft step's contact stiffness as a frequency, Hz (twice this against static geometry,
+    /// at most a quarter of the sub-step rate), and its damping ratio. Defaults 30 and 10.
+    Real softContactHertz = 30.0;
+    Real softDampingRatio = 10.0;
+    /// Fastest the soft step pushes overlapping bodies apart, m/s. Default 3.
+    Real softPushSpeed = 3.0;
     /// A body slower than these in contact with the ground for sleepTime is at rest. Defaults
     /// 1e-3 m/s, 1e-3 rad/s and 0.5 s.
     Real sleepLinearSpeed = 1e-3;

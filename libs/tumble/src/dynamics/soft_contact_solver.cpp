@@ -1,0 +1,282 @@
+// Soft contact rows (docs/physics/12-soft-step.md, (12.2)-(12.6)).
+#include "dynamics/soft_contact_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace tumble {
+
+namespace {
+
+/// Sweeps forth and back over a bouncing manifold's points (12.6).
+constexpr int kRestitutionSweeps = 4;
+
+/// The two bodies of a manifold, their velocities held in locals through its points and
+/// written back once.
+struct SoftPair {
+    SoftBody& a;
+    SoftBody& b;
+    Vec3 vA;
+    Vec3 wA;
+    Vec3 vB;
+    Vec3 wB;
+
+    SoftPair(SoftBody& bodyA, SoftBody& bodyB)
+        : a(bodyA), b(bodyB), vA(bodyA.linearVelocity), wA(bodyA.angularVelocity),
+          vB(bodyB.linearVelocity), wB(bodyB.angularVelocity)
+    {
+    }
+
+    /// Relative velocity of B's material point over A's at the offsets rA, rB (11.1).
+    [[nodiscard]] Vec3 relativeVelocity(const Vec3& rA, const Vec3& rB) const
+    {
+        return vB + glm::cross(wB, rB) - vA - glm::cross(wA, rA);
+    }
+
+    /// The impulse P on B at rB, -P on A at rA.
+    void apply(const Vec3& rA, const Vec3& rB, const Vec3& impulse)
+    {
+        vA -= a.invMass * impulse;
+        wA -= a.invInertia * glm::cross(rA, impulse);
+        vB += b.invMass * impulse;
+        wB += b.invInertia * glm::cross(rB, impulse);
+    }
+
+    /// The normal velocity at a point from its angular rows (12.4): n . (vB - vA) + (rB x n) . wB
+    /// - (rA x n) . wA.
+    [[nodiscard]] Real normalVelocity(const Vec3& normal, const SoftPoint& p) const
+    {
+        return glm::dot(normal, vB - vA) + glm::dot(p.angularB, wB) - glm::dot(p.angularA, wA);
+    }
+
+    /// The normal impulse lambda n at a point: its images under the inverse inertias are
+    /// lambda IA^-1 (rA x n) and lambda IB^-1 (rB x n).
+    void applyNormal(const Vec3& normal, const SoftPoint& p, Real impulse)
+    {
+        vA -= (a.invMass * impulse) * normal;
+        wA -= impulse * p.responseA;
+        vB += (b.invMass * impulse) * normal;
+        wB += impulse * p.responseB;
+    }
+
+    /// The angular impulse M on B, -M on A.
+    void applyAngular(const Vec3& moment)
+    {
+        wA -= a.invInertia * moment;
+        wB += b.invInertia * moment;
+    }
+
+    void store()
+    {
+        a.linearVelocity = vA;
+        a.angularVelocity = wA;
+        b.linearVelocity = vB;
+        b.angularVelocity = wB;
+    }
+};
+
+/// (12.4): the normal row of one point, soft and biased or (the relax pass) rigid.
+void solveNormal(SoftPair& pair, const SoftManifold& m, SoftPoint& p, const Vec3& deltaCentres,
+                 const SoftSolveSettings& settings, bool useBias)
+{
+    // the gap now, from how far the bodies moved and turned since the step began (12.3)
+    const Vec3 movedA = pair.a.deltaRotation * p.anchorA;
+    const Vec3 movedB = pair.b.deltaRotation * p.anchorB;
+    const Real gap = glm::dot(m.normal, deltaCentres + movedB - movedA) + p.baseSeparation;
+    Real bias = 0.0;
+    Real massScale = 1.0;
+    Real impulseScale = 0.0;
+    if (gap > 0.0) {
+        // speculative: the point may close its gap within the sub-step, no more
+        bias = gap * settings.inverseSubstep;
+    } else if (useBias) {
+        const Softness& soft = m.againstStatic ? settings.staticSoftness : settings.dynamicSoftness;
+        bias = std::max(soft.massScale * soft.biasRate * gap, -settings.pushSpeed);
+        massScale = soft.massScale;
+        impulseScale = soft.impulseScale;
+    }
+    const Real normalBefore = pair.normalVelocity(m.normal, p);
+    const Real impulse =
+        -p.normalMass * (massScale * normalBefore + bias) - impulseScale * p.normalImpulse;
+    const Real accumulated = std::max(p.normalImpulse + impulse, 0.0);
+    const Real applied = accumulated - p.normalImpulse;
+    p.normalImpulse = accumulated;
+    p.maxNormalImpulse = std::max(p.maxNormalImpulse, applied);
+    pair.applyNormal(m.normal, p, applied);
+    // (8.2): the work of an impulse is its size times the mean of the velocities it joins
+    p.normalWork += applied * (normalBefore + 0.5 * applied / p.normalMass);
+}
+
+/// (12.5): the twist about the normal, bounded by mu sum |r_i| lambda_i, then the sliding at the
+/// centre, its impulse brought back onto the disc of radius mu sum lambda_i.
+void solveFriction(SoftPair& pair, SoftManifold& m)
+{
+    Real load = 0.0;
+    Real twistLimit = 0.0;
+    for (int k = 0; k < m.pointCount; ++k) {
+        load += m.points[k].normalImpulse;
+        twistLimit += m.points[k].leverArm * m.points[k].normalImpulse;
+    }
+    twistLimit *= m.friction;
+    const Real spin = glm::dot(m.normal, pair.wB - pair.wA);
+    const Real twist =
+        std::clamp(m.twistImpulse - m.twistMass * spin, -twistLimit, twistLimit);
+    const Real twistApplied = twist - m.twistImpulse;
+    m.twistImpulse = twist;
+    pair.applyAngular(twistApplied * m.normal);
+    m.frictionWork += twistApplied * (spin + 0.5 * m.twistK * twistApplied);
+
+    const Vec3 velocity = pair.relativeVelocity(m.centreA, m.centreB);
+    const Real slip1 = glm::dot(m.tangent1, velocity);
+    const Real slip2 = glm::dot(m.tangent2, velocity);
+    const auto& mt = m.tangentMass;
+    Real next1 = m.frictionImpulse1 - (mt[0] * slip1 + mt[1] * slip2);
+    Real next2 = m.frictionImpulse2 - (mt[1] * slip1 + mt[2] * slip2);
+    const Real limit = m.friction * load;
+    const Real size = std::sqrt(next1 * next1 + next2 * next2);
+    if (size > limit) {
+        const Real shrink = size > 0.0 ? limit / size : 0.0;
+        next1 *= shrink;
+        next2 *= shrink;
+    }
+    const Real d1 = next1 - m.frictionImpulse1;
+    const Real d2 = next2 - m.frictionImpulse2;
+    m.frictionImpulse1 = next1;
+    m.frictionImpulse2 = next2;
+    pair.apply(m.centreA, m.centreB, d1 * m.tangent1 + d2 * m.tangent2);
+    const auto& kt = m.tangentK;
+    const Real change1 = kt[0] * d1 + kt[1] * d2;
+    const Real change2 = kt[1] * d1 + kt[2] * d2;
+    m.frictionWork += d1 * (slip1 + 0.5 * change1) + d2 * (slip2 + 0.5 * change2);
+}
+
+} // namespace
+
+Softness makeSoftness(Real hertz, Real dampingRatio, Real h)
+{
+    if (hertz == 0.0) {
+        return {};
+    }
+    // implicit Euler on m x'' = -k x - c x' with k = m omega^2, c = 2 m zeta omega (12.2)
+    const Real omega = 2.0 * std::numbers::pi * hertz;
+    const Real a1 = 2.0 * dampingRatio + h * omega;
+    const Real a2 = h * omega * a1;
+    const Real a3 = 1.0 / (1.0 + a2);
+    return {omega / a1, a2 * a3, a3};
+}
+
+void prepareSoftRows(SoftManifold& m, std::span<const SoftBody> bodies)
+{
+    const SoftBody& a = bodies[m.bodyA];
+    const SoftBody& b = bodies[m.bodyB];
+    m.centreA = Vec3(0.0);
+    m.centreB = Vec3(0.0);
+    for (int k = 0; k < m.pointCount; ++k) {
+        m.centreA += m.points[k].anchorA / static_cast<Real>(m.pointCount);
+        m.centreB += m.points[k].anchorB / static_cast<Real>(m.pointCount);
+    }
+    for (int k = 0; k < m.pointCount; ++k) {
+        SoftPoint& p = m.points[k];
+        p.angularA = glm::cross(p.anchorA, m.normal);
+        p.angularB = glm::cross(p.anchorB, m.normal);
+        p.responseA = a.invInertia * p.angularA;
+        p.responseB = b.invInertia * p.angularB;
+        // (11.2): K = mA + mB + (rA x n) . IA^-1 (rA x n) + (rB x n) . IB^-1 (rB x n)
+        const Real kn = a.invMass + b.invMass + glm::dot(p.angularA, p.responseA) +
+                       glm::dot(p.angularB, p.responseB);
+        p.normalMass = kn > 0.0 ? 1.0 / kn : 0.0;
+        const Vec3 fromCentre = m.points[k].anchorB - m.centreB;
+        m.points[k].leverArm = glm::length(fromCentre - glm::dot(fromCentre, m.normal) * m.normal);
+    }
+    // (11.3) at the centre: K_ij = (mA + mB) t_i . t_j + (rA x t_i) . IA^-1 (rA x t_j) + ...
+    const auto entry = [&](const Vec3& ti, const Vec3& tj) {
+        return (a.invMass + b.invMass) * glm::dot(ti, tj) +
+               glm::dot(glm::cross(m.centreA, ti), a.invInertia * glm::cross(m.centreA, tj)) +
+               glm::dot(glm::cross(m.centreB, ti), b.invInertia * glm::cross(m.centreB, tj));
+    };
+    const Real k11 = entry(m.tangent1, m.tangent1);
+    const Real k12 = entry(m.tangent1, m.tangent2);
+    const Real k22 = entry(m.tangent2, m.tangent2);
+    m.tangentK = {k11, k12, k22};
+    const Real determinant = k11 * k22 - k12 * k12;
+    m.tangentMass = determinant > 0.0 ? std::array<Real, 3>{k22 / determinant,
+                                                            -k12 / determinant,
+                                                            k11 / determinant}
+                                      : std::array<Real, 3>{};
+    m.twistK = glm::dot(m.normal, (a.invInertia + b.invInertia) * m.normal);
+    m.twistMass = m.twistK > 0.0 ? 1.0 / m.twistK : 0.0;
+}
+
+void warmStartSoft(std::span<const SoftManifold> manifolds, std::span<SoftBody> bodies)
+{
+    for (const SoftManifold& m : manifolds) {
+        SoftPair pair(bodies[m.bodyA], bodies[m.bodyB]);
+        for (int k = 0; k < m.pointCount; ++k) {
+            const SoftPoint& p = m.points[k];
+            pair.applyNormal(m.normal, p, p.normalImpulse);
+        }
+        pair.applyAngular(m.twistImpulse * m.normal);
+        pair.apply(m.centreA, m.centreB,
+                   m.frictionImpulse1 * m.tangent1 + m.frictionImpulse2 * m.tangent2);
+        pair.store();
+    }
+}
+
+void solveSoft(std::span<SoftManifold> manifolds, std::span<SoftBody> bodies,
+               const SoftSolveSettings& settings, bool useBias)
+{
+    for (SoftManifold& m : manifolds) {
+        SoftPair pair(bodies[m.bodyA], bodies[m.bodyB]);
+        const Vec3 deltaCentres = pair.b.deltaPosition - pair.a.deltaPosition;
+        // (12.4): forth and back over the points, so that a face's impulses carry no bias of
+        // the order in which its points come
+        for (int k = 0; k < m.pointCount; ++k) {
+            solveNormal(pair, m, m.points[k], deltaCentres, settings, useBias);
+        }
+        for (int k = m.pointCount - 1; k >= 0; --k) {
+            solveNormal(pair, m, m.points[k], deltaCentres, settings, useBias);
+        }
+        // friction acts in the relax pass only, whose velocities the step keeps (12.5)
+        if (!useBias) {
+            solveFriction(pair, m);
+        }
+        pair.store();
+    }
+}
+
+void restituteSoft(std::span<SoftManifold> manifolds, std::span<SoftBody> bodies, Real threshold)
+{
+    for (SoftManifold& m : manifolds) {
+        if (m.restitution == 0.0) {
+            continue;
+        }
+        SoftPair pair(bodies[m.bodyA], bodies[m.bodyB]);
+        const auto restitute = [&](SoftPoint& p) {
+            if (p.relativeVelocity > -threshold || p.maxNormalImpulse == 0.0) {
+                return;
+            }
+            const Real normalBefore = pair.normalVelocity(m.normal, p);
+            const Real impulse =
+                -p.normalMass * (normalBefore + m.restitution * p.relativeVelocity);
+            const Real accumulated = std::max(p.normalImpulse + impulse, 0.0);
+            const Real applied = accumulated - p.normalImpulse;
+            p.normalImpulse = accumulated;
+            pair.applyNormal(m.normal, p, applied);
+            p.normalWork += applied * (normalBefore + 0.5 * applied / p.normalMass);
+        };
+        // (12.6): a few sweeps forth and back over the manifold's points, so that a face that
+        // lands flat leaves flat
+        for (int sweep = 0; sweep < kRestitutionSweeps; ++sweep) {
+            for (int k = 0; k < m.pointCount; ++k) {
+                restitute(m.points[k]);
+            }
+            for (int k = m.pointCount - 1; k >= 0; --k) {
+                restitute(m.points[k]);
+            }
+        }
+        pair.store();
+    }
+}
+
+} // namespace tumble

@@ -1,0 +1,123 @@
+// The soft step's contact rows: soft non-penetration with a bounded push-out, a friction disc,
+// a relax pass without bias and restitution after the sub-steps (docs/physics/12-soft-step.md).
+#pragma once
+
+#include "tumble/math.hpp"
+
+#include <array>
+#include <cstdint>
+#include <span>
+
+namespace tumble {
+
+/// A body as the soft step sees it: velocities, how far it moved since the step began, and its
+/// inverse mass properties, held at the step's start (12.4). Static geometry is the one body of
+/// zero inverses, which never moves.
+struct SoftBody {
+    Vec3 linearVelocity{0.0};
+    Vec3 angularVelocity{0.0};
+    /// Displacement of the centre of mass since the step began, m.
+    Vec3 deltaPosition{0.0};
+    /// Orientation now, and its rotation since the step began, R(q) R(q0)^T.
+    Quat orientation{1.0, 0.0, 0.0, 0.0};
+    Mat3 deltaRotation{1.0};
+    Real invMass = 0.0;
+    Mat3 invInertia{0.0};
+};
+
+/// (12.2): the coefficients of a soft row for a spring of `hertz` and `dampingRatio` advanced by
+/// implicit Euler over h: the bias rate on the gap, the share of the rigid effective mass and
+/// the share of the accumulated impulse taken back each solve. hertz = 0 is a rigid row.
+struct Softness {
+    Real biasRate = 0.0;
+    Real massScale = 1.0;
+    Real impulseScale = 0.0;
+};
+
+Softness makeSoftness(Real hertz, Real dampingRatio, Real h);
+
+/// One point of a soft manifold. The anchors are the offsets of the point from each centre of
+/// mass at the step's start; the gap now is n . ((dpB + dRB rB) - (dpA + dRA rA)) plus
+/// `baseSeparation` (12.3).
+struct SoftPoint {
+    Vec3 anchorA{0.0};
+    Vec3 anchorB{0.0};
+    /// The normal row's angular parts rA x n, rB x n and their images under the inverse
+    /// inertias (11.2).
+    Vec3 angularA{0.0};
+    Vec3 angularB{0.0};
+    Vec3 responseA{0.0};
+    Vec3 responseB{0.0};
+    Real baseSeparation = 0.0;
+    Real normalMass = 0.0;
+    /// Distance of the point from the manifold's centre, m: its lever for twist friction (12.5).
+    Real leverArm = 0.0;
+    /// Normal velocity when the step began, m/s: what restitution reverses (12.6).
+    Real relativeVelocity = 0.0;
+    Real normalImpulse = 0.0;
+    /// Largest normal impulse any solve of the step applied: restitution acts only where the
+    /// point pushed.
+    Real maxNormalImpulse = 0.0;
+    /// Work of the point's normal impulses over the step, J (8.2).
+    Real normalWork = 0.0;
+};
+
+/// A contact of the soft step: two bodies, one normal, up to four points, and one friction
+/// row pair and one twist row at the points' centre (12.5).
+struct SoftManifold {
+    std::uint32_t bodyA = 0;
+    std::uint32_t bodyB = 0;
+    int pointCount = 0;
+    /// Whether one side is static geometry: such rows are twice as stiff (12.2).
+    bool againstStatic = false;
+    Vec3 normal{0.0, 1.0, 0.0};
+    Vec3 tangent1{1.0, 0.0, 0.0};
+    Vec3 tangent2{0.0, 0.0, 1.0};
+    Real friction = 0.0;
+    Real restitution = 0.0;
+    /// The points' centre as offsets from each centre of mass, m.
+    Vec3 centreA{0.0};
+    Vec3 centreB{0.0};
+    /// K_t at the centre over (t1, t2) and its inverse, as (11, 12, 22) (11.3).
+    std::array<Real, 3> tangentK{};
+    std::array<Real, 3> tangentMass{};
+    /// n . (IA^-1 + IB^-1) n and its inverse: the twist row's K and effective mass.
+    Real twistK = 0.0;
+    Real twistMass = 0.0;
+    Real frictionImpulse1 = 0.0;
+    Real frictionImpulse2 = 0.0;
+    Real twistImpulse = 0.0;
+    /// Work of the friction and twist impulses over the step, J (8.2).
+    Real frictionWork = 0.0;
+    std::array<SoftPoint, 4> points{};
+};
+
+/// Fills in a manifold's normal rows' angular parts, its centre, and its tangential and twist
+/// masses from its points' anchors, normal, tangents and the bodies' inverse masses and
+/// inertias.
+void prepareSoftRows(SoftManifold& manifold, std::span<const SoftBody> bodies);
+
+/// What one solve pass reads besides the rows: the sub-step's softness for contacts between
+/// dynamic bodies and against static geometry, 1 / h, and the push-out's speed bound.
+struct SoftSolveSettings {
+    Softness dynamicSoftness{};
+    Softness staticSoftness{};
+    Real inverseSubstep = 0.0;
+    Real pushSpeed = 0.0;
+};
+
+/// Applies each manifold's accumulated impulses to its bodies (12.5).
+void warmStartSoft(std::span<const SoftManifold> manifolds, std::span<SoftBody> bodies);
+
+/// One Gauss-Seidel pass over the manifolds in order: each point's normal row, soft and biased
+/// towards closing its gap when `useBias` (12.4); rigid and unbiased when not (the relax pass),
+/// followed by the manifold's twist row and its friction disc of radius mu sum lambda_n (12.5).
+void solveSoft(std::span<SoftManifold> manifolds, std::span<SoftBody> bodies,
+               const SoftSolveSettings& settings, bool useBias);
+
+/// (12.6): each point that pushed and began the step approaching faster than `threshold` gets
+/// the normal impulse that makes it leave at e times its approach speed, never pulling.
+void restituteSoft(std::span<SoftManifold> manifolds, std::span<SoftBody> bodies,
+                   Real threshold);
+
+} // namespace tumble

@@ -1,0 +1,275 @@
+// The soft step (docs/physics/12-soft-step.md): narrow phase and rows once a step, then per
+// sub-step gravity, warm start, a biased soft solve, positions, and a relax solve; restitution
+// after the last sub-step.
+#include "step/soft_step.hpp"
+
+#include "body_state.hpp"
+#include "dynamics/energy_booking.hpp"
+#include "dynamics/soft_contact_solver.hpp"
+#include "step/island_contacts.hpp"
+#include "step/soft_warm_start.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tumble {
+
+namespace {
+
+/// The vectors of an island's soft step, kept by each thread from step to step.
+struct SoftBuffers {
+    std::vector<IslandContact> contacts;
+    std::vector<Vec3> centres;
+    std::vector<SoftManifold> manifolds;
+    std::vector<SoftBody> bodies;
+    std::vector<Real> energies;
+    std::vector<Real> kineticStart;
+    std::vector<Real> bodyWork;
+    std::vector<Real> kinetic;
+};
+
+SoftBuffers& threadBuffers()
+{
+    thread_local SoftBuffers buffers;
+    return buffers;
+}
+
+/// Below this sliding speed at the step's start a point sticks, and the static coefficient
+/// bounds its friction (6.2), m/s.
+constexpr Real kStickingSpeed = 1e-3;
+
+SoftBody softBodyOf(const Body& body)
+{
+    SoftBody soft;
+    soft.linearVelocity = body.linearVelocity;
+    soft.angularVelocity = body.angularVelocity;
+    soft.orientation = body.orientation;
+    soft.invMass = body.invMass;
+    soft.invInertia = body.invInertiaWorld;
+    return soft;
+}
+
+/// (12.3): the manifold of a contact at the bodies' poses now: anchors from each dynamic centre of
+/// mass (a static side never moves, so its anchors are zero), the gaps, the normal rows and
+/// the friction at the centre; impulses zero.
+SoftManifold softManifoldOf(const IslandContact& contact, std::span<const SoftBody> bodies,
+                            std::span<const Vec3> centres, std::size_t staticIndex)
+{
+    SoftManifold m;
+    m.bodyA = contact.solverA;
+    m.bodyB = contact.solverB;
+    m.pointCount = contact.manifold.pointCount;
+    m.againstStatic = m.bodyA == staticIndex || m.bodyB == staticIndex;
+    m.normal = contact.manifold.normal;
+    orthonormalBasis(m.normal, m.tangent1, m.tangent2);
+    m.restitution = contact.restitution;
+    const SoftBody& a = bodies[m.bodyA];
+    const SoftBody& b = bodies[m.bodyB];
+    const auto anchor = [&](std::uint32_t side, const Vec3& point) {
+        return side == staticIndex ? Vec3(0.0) : point - centres[side];
+    };
+    for (int k = 0; k < m.pointCount; ++k) {
+        const PairContactPoint& point = contact.manifold.points[k];
+        SoftPoint& p = m.points[k];
+        p.anchorA = anchor(m.bodyA, point.position);
+        p.anchorB = anchor(m.bodyB, point.position);
+        p.baseSeparation = point.separation - glm::dot(m.normal, p.anchorB - p.anchorA);
+        const Vec3 velocity = b.linearVelocity + glm::cross(b.angularVelocity, p.anchorB) -
+                              a.linearVelocity - glm::cross(a.angularVelocity, p.anchorA);
+        p.relativeVelocity = glm::dot(m.normal, velocity);
+    }
+    prepareSoftRows(m, bodies);
+    // (6.2) at the centre: the static coefficient while the faces do not slide
+    const Vec3 centreVelocity = b.linearVelocity + glm::cross(b.angularVelocity, m.centreB) -
+                                a.linearVelocity - glm::cross(a.angularVelocity, m.centreA);
+    const Vec3 sliding = centreVelocity - glm::dot(m.normal, centreVelocity) * m.normal;
+    m.friction = lengthSquared(sliding) < kStickingSpeed * kStickingSpeed ? contact.staticFriction
+                                                                         : contact.friction;
+    return m;
+}
+
+class SoftStep {
+public:
+    SoftStep(const CoupledIsland& island, std::span<BodySlot> slots, const StepContext& context,
+             StepEvents& events, SoftBuffers& buffers)
+        : m_island(island), m_slots(slots), m_context(context), m_settings(context.settings),
+          m_events(events), m_buffers(buffers)
+    {
+    }
+
+    void run(Real dt);
+
+private:
+    void prepare(Real h);
+    void substep(Real h, const SoftSolveSettings& solve);
+    void finish();
+    /// Adds to each body's work what its kinetic energy gained since `m_buffers.kinetic`.
+    void addBodyWork();
+    void saveKinetic();
+    Body& body(std::size_t local) { return m_slots[m_island.bodies[local]].body; }
+
+    const CoupledIsland& m_island;
+    std::span<BodySlot> m_slots;
+    const StepContext& m_context;
+    const WorldSettings& m_settings;
+    StepEvents& m_events;
+    SoftBuffers& m_buffers;
+};
+
+void SoftStep::run(Real dt)
+{
+    const int substeps = std::max(1, m_settings.softSubsteps);
+    const Real h = dt / substeps;
+    prepare(h);
+    // (12.2): a contact spring gets at least four sub-steps a period; against static geometry
+    // it is twice as stiff with half the damping ratio, the same damping coefficient 2 zeta omega
+    const Real hertz = std::min(m_settings.softContactHertz, 0.25 / h);
+    const Real damping = m_settings.softDampingRatio;
+    const SoftSolveSettings solve{makeSoftness(hertz, damping, h),
+                                  makeSoftness(2.0 * hertz, 0.5 * damping, h),
+                                  1.0 / h, m_settings.softPushSpeed};
+    for (int s = 0; s < substeps; ++s) {
+        substep(h, solve);
+    }
+    saveKinetic();
+    restituteSoft(m_buffers.manifolds, m_buffers.bodies, m_settings.restitutionThreshold);
+    addBodyWork();
+    finish();
+    ++m_events.statistics.islands;
+    m_events.statistics.bodies += m_island.bodies.size();
+    m_events.statistics.substeps += static_cast<std::size_t>(substeps);
+    m_events.statistics.solves += static_cast<std::size_t>(substeps);
+    m_events.statistics.sweeps += 2 * static_cast<std::size_t>(substeps);
+}
+
+void SoftStep::prepare(Real h)
+{
+    const std::size_t count = m_island.bodies.size();
+    // the exact step's kept constraints do not survive a soft step
+    for (const std::uint32_t index : m_island.bodies) {
+        m_slots[index].kept.release();
+    }
+    m_buffers.energies.resize(count);
+    m_buffers.kineticStart.resize(count);
+    m_buffers.bodyWork.assign(count, 0.0);
+    m_buffers.bodies.assign(count + 1, SoftBody{});
+    for (std::size_t i = 0; i < count; ++i) {
+        m_buffers.energies[i] = energyOf(body(i), m_settings.gravity);
+        m_buffers.kineticStart[i] = body(i).kineticEnergy();
+        m_buffers.bodies[i] = softBodyOf(body(i));
+    }
+    // narrow phase once a step: every point the bodies can reach within it (12.1)
+    const Real dt = h * std::max(1, m_settings.softSubsteps);
+    findIslandContacts(m_island, m_slots, m_context, dt, m_buffers.contacts);
+    m_buffers.centres.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        m_buffers.centres[i] = body(i).position;
+    }
+    m_buffers.manifolds.resize(m_buffers.contacts.size());
+    std::size_t points = 0;
+    for (std::size_t k = 0; k < m_buffers.contacts.size(); ++k) {
+        m_buffers.manifolds[k] = softManifoldOf(m_buffers.contacts[k], m_buffers.bodies,
+                                                m_buffers.centres, count);
+        points += static_cast<std::size_t>(m_buffers.manifolds[k].pointCount);
+    }
+    m_events.statistics.contactPoints += points;
+    // (12.5): last step's impulses, matched by the other side and the points' feature keys
+    loadSoftWarmStart(m_island, m_slots, m_buffers.contacts, m_buffers.manifolds,
+                      m_settings.contactTolerance);
+}
+
+void SoftStep::substep(Real h, const SoftSolveSettings& solve)
+{
+    const std::size_t count = m_island.bodies.size();
+    std::vector<SoftBody>& bodies = m_buffers.bodies;
+    for (std::size_t i = 0; i < count; ++i) {
+        bodies[i].linearVelocity += m_settings.gravity * h;
+    }
+    saveKinetic();
+    warmStartSoft(m_buffers.manifolds, bodies);
+    solveSoft(m_buffers.manifolds, bodies, solve, true);
+    // (12.4): positions from the solved velocities, the orientation to first order, normalised
+    for (std::size_t i = 0; i < count; ++i) {
+        SoftBody& b = bodies[i];
+        b.deltaPosition += h * b.linearVelocity;
+        const Quat spin(0.0, b.angularVelocity.x, b.angularVelocity.y, b.angularVelocity.z);
+        b.orientation = glm::normalize(b.orientation + (0.5 * h) * (spin * b.orientation));
+        b.deltaRotation =
+            glm::mat3_cast(b.orientation) * glm::transpose(body(i).rotation());
+    }
+    solveSoft(m_buffers.manifolds, bodies, solve, false);
+    addBodyWork();
+}
+
+void SoftStep::saveKinetic()
+{
+    const std::size_t count = m_island.bodies.size();
+    m_buffers.kinetic.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        m_buffers.kinetic[i] = kineticEnergyWith(body(i), m_buffers.bodies[i].linearVelocity,
+                                                 m_buffers.bodies[i].angularVelocity);
+    }
+}
+
+void SoftStep::addBodyWork()
+{
+    for (std::size_t i = 0; i < m_island.bodies.size(); ++i) {
+        m_buffers.bodyWork[i] += kineticEnergyWith(body(i), m_buffers.bodies[i].linearVelocity,
+                                                   m_buffers.bodies[i].angularVelocity) -
+                                 m_buffers.kinetic[i];
+    }
+}
+
+void SoftStep::finish()
+{
+    const std::size_t count = m_island.bodies.size();
+    // (12.5): the last sub-step's impulses start the next step's sub-steps
+    storeSoftWarmStart(m_island, m_slots, m_buffers.contacts, m_buffers.manifolds);
+    IslandWork total;
+    for (const SoftManifold& m : m_buffers.manifolds) {
+        for (int k = 0; k < m.pointCount; ++k) {
+            total.normal += m.points[k].normalWork;
+        }
+        total.friction += m.frictionWork;
+    }
+    std::vector<SolverBody> inverse(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        inverse[i].invMass = m_buffers.bodies[i].invMass;
+    }
+    const std::vector<ContactWork> work =
+        shareIslandWork(total, m_buffers.bodyWork, m_buffers.kineticStart, inverse);
+    for (std::size_t i = 0; i < count; ++i) {
+        Body& b = body(i);
+        const SoftBody& soft = m_buffers.bodies[i];
+        b.position += soft.deltaPosition;
+        b.orientation = soft.orientation;
+        b.linearVelocity = soft.linearVelocity;
+        b.angularVelocity = soft.angularVelocity;
+        refreshWorldInertia(b);
+        bookContact(b, work[i], energyOf(b, m_settings.gravity) - m_buffers.energies[i], false);
+        m_slots[m_island.bodies[i]].touchingGround = false;
+    }
+    // a body touches when one of its points pushed in the last sub-step (7.1)
+    for (const SoftManifold& m : m_buffers.manifolds) {
+        const bool pushed = std::any_of(m.points.begin(), m.points.begin() + m.pointCount,
+                                        [](const SoftPoint& p) { return p.normalImpulse > 0.0; });
+        if (!pushed) {
+            continue;
+        }
+        for (const std::uint32_t side : {m.bodyA, m.bodyB}) {
+            if (side < count) {
+                m_slots[m_island.bodies[side]].touchingGround = true;
+            }
+        }
+    }
+}
+
+} // namespace
+
+void advanceSoft(const CoupledIsland& island, std::span<BodySlot> slots,
+                 const StepContext& context, Real dt, StepEvents& events)
+{
+    SoftStep(island, slots, context, events, threadBuffers()).run(dt);
+}
+
+} // namespace tumble

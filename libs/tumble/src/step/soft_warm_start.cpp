@@ -1,0 +1,113 @@
+// The soft step's warm start (docs/physics/12-soft-step.md, (12.5)).
+#include "step/soft_warm_start.hpp"
+
+#include <algorithm>
+
+namespace tumble {
+
+namespace {
+
+/// (11.6): how far, in contact tolerances, a point may be from a kept point of its contact whose
+/// features had another name and still take its impulse.
+constexpr Real kWarmStartReach = 10.0;
+
+Vec3 inBodyFrame(const Body& owner, const Vec3& point)
+{
+    return glm::conjugate(owner.orientation) * (point - owner.position);
+}
+
+/// The kept point each of the contact's points takes its normal impulse from, or -1: the same
+/// feature key first, then the nearest unclaimed kept point within `reach`.
+std::array<int, 4> matchPoints(const IslandContact& contact, const CachedSoftContact& kept,
+                               const Body& owner, Real reach)
+{
+    std::array<int, 4> match{-1, -1, -1, -1};
+    std::array<bool, 4> taken{};
+    const int count = contact.manifold.pointCount;
+    for (int k = 0; k < count; ++k) {
+        for (int j = 0; j < kept.pointCount; ++j) {
+            if (!taken[j] && kept.ids[j] == contact.manifold.points[k].id) {
+                match[k] = j;
+                taken[j] = true;
+                break;
+            }
+        }
+    }
+    for (int k = 0; k < count; ++k) {
+        if (match[k] >= 0) {
+            continue;
+        }
+        const Vec3 local = inBodyFrame(owner, contact.manifold.points[k].position);
+        Real nearest = reach * reach;
+        for (int j = 0; j < kept.pointCount; ++j) {
+            const Real distance = lengthSquared(local - kept.localPositions[j]);
+            if (!taken[j] && distance <= nearest) {
+                nearest = distance;
+                match[k] = j;
+            }
+        }
+        if (match[k] >= 0) {
+            taken[match[k]] = true;
+        }
+    }
+    return match;
+}
+
+} // namespace
+
+void loadSoftWarmStart(const CoupledIsland& island, std::span<const BodySlot> slots,
+                       std::span<const IslandContact> contacts, std::span<SoftManifold> manifolds,
+                       Real tolerance)
+{
+    for (std::size_t index = 0; index < contacts.size(); ++index) {
+        const IslandContact& contact = contacts[index];
+        SoftManifold& m = manifolds[index];
+        const std::vector<CachedSoftContact>& cache =
+            slots[island.bodies[contact.owner]].softContacts;
+        const auto kept = std::find_if(cache.begin(), cache.end(), [&](const CachedSoftContact& c) {
+            return c.other == contact.ownerKey;
+        });
+        if (kept == cache.end()) {
+            continue;
+        }
+        const Body& owner = slots[island.bodies[contact.owner]].body;
+        const std::array<int, 4> match =
+            matchPoints(contact, *kept, owner, kWarmStartReach * tolerance);
+        for (int k = 0; k < m.pointCount; ++k) {
+            if (match[k] >= 0) {
+                m.points[k].normalImpulse = kept->normalImpulses[match[k]];
+            }
+        }
+        m.frictionImpulse1 = glm::dot(m.tangent1, kept->frictionImpulse);
+        m.frictionImpulse2 = glm::dot(m.tangent2, kept->frictionImpulse);
+        m.twistImpulse = kept->twistImpulse;
+    }
+}
+
+void storeSoftWarmStart(const CoupledIsland& island, std::span<BodySlot> slots,
+                        std::span<const IslandContact> contacts,
+                        std::span<const SoftManifold> manifolds)
+{
+    for (const std::uint32_t slot : island.bodies) {
+        slots[slot].softContacts.clear();
+    }
+    for (std::size_t index = 0; index < contacts.size(); ++index) {
+        const IslandContact& contact = contacts[index];
+        const SoftManifold& m = manifolds[index];
+        BodySlot& slot = slots[island.bodies[contact.owner]];
+        const Body& owner = slot.body;
+        CachedSoftContact kept;
+        kept.other = contact.ownerKey;
+        kept.pointCount = m.pointCount;
+        for (int k = 0; k < m.pointCount; ++k) {
+            kept.ids[k] = contact.manifold.points[k].id;
+            kept.localPositions[k] = inBodyFrame(owner, contact.manifold.points[k].position);
+            kept.normalImpulses[k] = m.points[k].normalImpulse;
+        }
+        kept.frictionImpulse = m.frictionImpulse1 * m.tangent1 + m.frictionImpulse2 * m.tangent2;
+        kept.twistImpulse = m.twistImpulse;
+        slot.softContacts.push_back(kept);
+    }
+}
+
+} // namespace tumble
