@@ -116,8 +116,8 @@ void addIndependentScene(const scenario::Scenario& loaded, const std::string& na
 }
 
 /// A scene of bodies pressing on each other (S5, the stack, the pyramid): tumble at each thread
-/// count with the file's sleeping, once more with sleeping off where the file has it on, then
-/// the peers with the file's sleeping.
+/// count with the file's sleeping, once more with sleeping off where the file has it on, the
+/// soft step at each thread count, then the peers with the file's sleeping.
 void addContactScene(const scenario::Scenario& loaded, const std::string& name,
                      const BenchOptions& options, int leastRuns, BenchTables& tables)
 {
@@ -129,6 +129,14 @@ void addContactScene(const scenario::Scenario& loaded, const std::string& name,
     }
     if (sleep) {
         rows.push_back(runTumble(loaded, name, options.threads.front(), false, leastRuns));
+    }
+    // the same bodies with the soft step (docs/physics/12-soft-step.md), the file's sleeping
+    if (loaded.settings.solver == ContactSolver::Exact) {
+        scenario::Scenario soft = loaded;
+        soft.settings.solver = ContactSolver::Soft;
+        for (const int threads : options.threads) {
+            rows.push_back(runTumble(soft, name, threads, sleep, leastRuns));
+        }
     }
     if (options.peers) {
         addPeerRows(loaded, name, referenceNs(rows, first, sleep), leastRuns, tables, rows);

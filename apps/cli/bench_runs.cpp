@@ -90,7 +90,8 @@ BenchRow runTumble(const scenario::Scenario& loaded, const std::string& name, in
 {
     BenchRow row;
     row.scenario = name;
-    row.engine = sleep ? "tumble" : "tumble nosleep";
+    const bool soft = loaded.settings.solver == ContactSolver::Soft;
+    row.engine = std::string(soft ? "tumble soft" : "tumble") + (sleep ? "" : " nosleep");
     row.bodies = static_cast<int>(loaded.bodies.size());
     row.threads = threads;
     row.steps = stepCount(loaded);

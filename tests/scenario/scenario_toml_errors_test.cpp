@@ -325,6 +325,26 @@ TEST(ScenarioTomlErrors, ZeroSolverIterations)
                           "scene.toml:2: world.solver_iterations: ", "must be between 1"));
 }
 
+TEST(ScenarioTomlErrors, UnknownSolverNamesTheChoices)
+{
+    EXPECT_TRUE(failsWith("[world]\nsolver = \"sofft\"\n[[body]]\n",
+                          "scene.toml:2: world.solver: ", "\"exact\""));
+}
+
+TEST(ScenarioTomlErrors, SoftSubstepsOutOfRange)
+{
+    EXPECT_TRUE(failsWith("[world]\nsoft_substeps = 0\n[[body]]\n",
+                          "scene.toml:2: world.soft_substeps: ", "must be between 1 and 64"));
+    EXPECT_TRUE(failsWith("[world]\nsoft_substeps = 4.0\n[[body]]\n",
+                          "scene.toml:2: world.soft_substeps: ", "expected an integer"));
+}
+
+TEST(ScenarioTomlErrors, NonPositiveSoftContactHertz)
+{
+    EXPECT_TRUE(failsWith("[world]\nsoft_contact_hertz = 0\n[[body]]\n",
+                          "scene.toml:2: world.soft_contact_hertz: ", "must be > 0"));
+}
+
 TEST(ScenarioTomlErrors, NonPositiveContactTolerance)
 {
     EXPECT_TRUE(failsWith("[world]\ncontact_tolerance = 0\n[[body]]\n",

@@ -187,6 +187,25 @@ TEST(ScenarioToml, WorldKeysMapOntoSettings)
     EXPECT_EQ(scenario.ground->height, -2.0);
 }
 
+TEST(ScenarioToml, SoftStepKeysMapOntoSettings)
+{
+    const Scenario scenario = parseScenario("[world]\n"
+                                            "solver = \"soft\"\n"
+                                            "soft_substeps = 8\n"
+                                            "soft_contact_hertz = 45\n"
+                                            "soft_damping_ratio = 2\n"
+                                            "soft_push_speed = 0.5\n"
+                                            "[[body]]\n",
+                                            "scene.toml");
+    const WorldSettings& settings = scenario.settings;
+    EXPECT_EQ(settings.solver, ContactSolver::Soft);
+    EXPECT_EQ(settings.softSubsteps, 8);
+    EXPECT_EQ(settings.softContactHertz, 45.0);
+    EXPECT_EQ(settings.softDampingRatio, 2.0);
+    EXPECT_EQ(settings.softPushSpeed, 0.5);
+    EXPECT_EQ(parseScenario("[[body]]\n", "scene.toml").settings.solver, ContactSolver::Exact);
+}
+
 TEST(ScenarioToml, EmptyGroundTableIsThePlaneAtZero)
 {
     const Scenario scenario =

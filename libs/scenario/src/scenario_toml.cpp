@@ -24,6 +24,32 @@ namespace {
 using detail::ifPresent;
 using detail::TomlReader;
 
+/// world.solver and the soft step's keys (docs/physics/12-soft-step.md).
+void readSoftSettings(const TomlReader& reader, const toml::table& world, WorldSettings& settings)
+{
+    ifPresent(world, "solver", [&](const toml::node& node) {
+        const std::size_t index = reader.choice(node, "world.solver", detail::kSolverNames);
+        settings.solver = index == 0 ? ContactSolver::Exact : ContactSolver::Soft;
+    });
+    ifPresent(world, "soft_substeps", [&](const toml::node& node) {
+        const long long substeps = reader.integer(node, "world.soft_substeps");
+        if (substeps < 1 || substeps > 64) {
+            reader.fail(node, "world.soft_substeps",
+                        "must be between 1 and 64, got " + std::to_string(substeps));
+        }
+        settings.softSubsteps = static_cast<int>(substeps);
+    });
+    ifPresent(world, "soft_contact_hertz", [&](const toml::node& node) {
+        settings.softContactHertz = reader.positive(node, "world.soft_contact_hertz");
+    });
+    ifPresent(world, "soft_damping_ratio", [&](const toml::node& node) {
+        settings.softDampingRatio = reader.nonNegative(node, "world.soft_damping_ratio");
+    });
+    ifPresent(world, "soft_push_speed", [&](const toml::node& node) {
+        settings.softPushSpeed = reader.positive(node, "world.soft_push_speed");
+    });
+}
+
 /// world.integrator, world.response and the other WorldSettings keys.
 void readSettings(const TomlReader& reader, const toml::table& world, WorldSettings& settings)
 {
@@ -56,6 +82,7 @@ void readSettings(const TomlReader& reader, const toml::table& world, WorldSetti
         }
         settings.solverIterations = static_cast<int>(iterations);
     });
+    readSoftSettings(reader, world, settings);
     ifPresent(world, "sleep", [&](const toml::node& node) {
         settings.allowSleep = reader.boolean(node, "world.sleep");
     });

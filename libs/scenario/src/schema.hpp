@@ -9,10 +9,11 @@ namespace tumble::scenario::detail {
 inline constexpr std::array<std::string_view, 7> kTopLevelKeys{
     "world", "ground", "plane", "body", "impulse", "spawn", "throw"};
 
-inline constexpr std::array<std::string_view, 12> kWorldKeys{
+inline constexpr std::array<std::string_view, 17> kWorldKeys{
     "gravity", "dt", "duration", "integrator", "response", "contact_tolerance",
-    "restitution_threshold", "solver_iterations", "sleep", "sleep_linear_speed",
-    "sleep_angular_speed", "sleep_time"};
+    "restitution_threshold", "solver_iterations", "solver", "soft_substeps", "soft_contact_hertz",
+    "soft_damping_ratio", "soft_push_speed", "sleep", "sleep_linear_speed", "sleep_angular_speed",
+    "sleep_time"};
 
 inline constexpr std::array<std::string_view, 4> kGroundKeys{"height", "elasticity", "friction",
                                                             "static_friction"};
@@ -52,6 +53,8 @@ inline constexpr std::array<std::string_view, 2> kAxisAngleKeys{"axis", "degrees
 /// Values of world.integrator and world.response, in the order of the library's enumerators.
 inline constexpr std::array<std::string_view, 2> kIntegratorNames{"exact", "handout"};
 inline constexpr std::array<std::string_view, 2> kResponseNames{"sequential", "average"};
+/// Values of world.solver, in the order of ContactSolver's enumerators.
+inline constexpr std::array<std::string_view, 2> kSolverNames{"exact", "soft"};
 /// Values of throw.orientation, in the order of ThrowOrientation's enumerators.
 inline constexpr std::array<std::string_view, 2> kThrowOrientationNames{"random", "body"};
 

@@ -80,6 +80,12 @@ void writeWorldToml(std::ostream& out, const Scenario& scenario, Real duration)
         << "contact_tolerance = " << exact(settings.contactTolerance) << '\n'
         << "restitution_threshold = " << exact(settings.restitutionThreshold) << '\n'
         << "solver_iterations = " << settings.solverIterations << '\n'
+        << "solver = \""
+        << kSolverNames[settings.solver == ContactSolver::Exact ? 0 : 1] << "\"\n"
+        << "soft_substeps = " << settings.softSubsteps << '\n'
+        << "soft_contact_hertz = " << exact(settings.softContactHertz) << '\n'
+        << "soft_damping_ratio = " << exact(settings.softDampingRatio) << '\n'
+        << "soft_push_speed = " << exact(settings.softPushSpeed) << '\n'
         << "sleep = " << (settings.allowSleep ? "true" : "false") << '\n'
         << "sleep_linear_speed = " << exact(settings.sleepLinearSpeed) << '\n'
         << "sleep_angular_speed = " << exact(settings.sleepAngularSpeed) << '\n'
