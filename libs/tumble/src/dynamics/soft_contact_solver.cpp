@@ -1,6 +1,8 @@
 // Soft contact rows (docs/physics/12-soft-step.md, (12.2)-(12.6)).
 #include "dynamics/soft_contact_solver.hpp"
 
+#include "parallel_for.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -11,6 +13,32 @@ namespace {
 
 /// Sweeps forth and back over a bouncing manifold's points (12.6).
 constexpr int kRestitutionSweeps = 4;
+/// A colour of fewer manifolds than this is swept by one thread: handing it out would cost more
+/// than sweeping it.
+constexpr std::size_t kThreadedColourManifolds = 256;
+
+/// Calls `visit(i)` for every manifold in colour order: each colour's manifolds move no dynamic
+/// body twice, so a large colour is split over `threads` and the result is the same for any
+/// count (11.5c); the overflow group goes in order on one thread.
+template <typename Visit>
+void forEachManifold(std::size_t count, const SoftColours& colours, int threads,
+                     const Visit& visit)
+{
+    if (colours.offsets.size() < 2) {
+        for (std::size_t i = 0; i < count; ++i) {
+            visit(i);
+        }
+        return;
+    }
+    const std::size_t groups = colours.offsets.size() - 1;
+    for (std::size_t c = 0; c < groups; ++c) {
+        const std::size_t first = colours.offsets[c];
+        const std::size_t size = colours.offsets[c + 1] - first;
+        const bool overflow = c + 1 == groups;
+        const int used = !overflow && size >= kThreadedColourManifolds ? threads : 1;
+        parallelFor(size, used, [&](std::size_t i) { visit(first + i); });
+    }
+}
 
 /// The two bodies of a manifold, their velocities held in locals through its points and
 /// written back once.
@@ -67,12 +95,18 @@ struct SoftPair {
         wB += b.invInertia * moment;
     }
 
+    /// Writes the velocities back; the static body (no inverse mass) never changes, and
+    /// manifolds of one colour on different threads share it.
     void store()
     {
-        a.linearVelocity = vA;
-        a.angularVelocity = wA;
-        b.linearVelocity = vB;
-        b.angularVelocity = wB;
+        if (a.invMass > 0.0) {
+            a.linearVelocity = vA;
+            a.angularVelocity = wA;
+        }
+        if (b.invMass > 0.0) {
+            b.linearVelocity = vB;
+            b.angularVelocity = wB;
+        }
     }
 };
 
@@ -208,9 +242,11 @@ void prepareSoftRows(SoftManifold& m, std::span<const SoftBody> bodies)
     m.twistMass = m.twistK > 0.0 ? 1.0 / m.twistK : 0.0;
 }
 
-void warmStartSoft(std::span<const SoftManifold> manifolds, std::span<SoftBody> bodies)
+void warmStartSoft(std::span<const SoftManifold> manifolds, std::span<SoftBody> bodies,
+                   const SoftColours& colours, int threads)
 {
-    for (const SoftManifold& m : manifolds) {
+    forEachManifold(manifolds.size(), colours, threads, [&](std::size_t index) {
+        const SoftManifold& m = manifolds[index];
         SoftPair pair(bodies[m.bodyA], bodies[m.bodyB]);
         for (int k = 0; k < m.pointCount; ++k) {
             const SoftPoint& p = m.points[k];
@@ -220,13 +256,15 @@ void warmStartSoft(std::span<const SoftManifold> manifolds, std::span<SoftBody> 
         pair.apply(m.centreA, m.centreB,
                    m.frictionImpulse1 * m.tangent1 + m.frictionImpulse2 * m.tangent2);
         pair.store();
-    }
+    });
 }
 
 void solveSoft(std::span<SoftManifold> manifolds, std::span<SoftBody> bodies,
-               const SoftSolveSettings& settings, bool useBias)
+               const SoftSolveSettings& settings, bool useBias, const SoftColours& colours,
+               int threads)
 {
-    for (SoftManifold& m : manifolds) {
+    forEachManifold(manifolds.size(), colours, threads, [&](std::size_t index) {
+        SoftManifold& m = manifolds[index];
         SoftPair pair(bodies[m.bodyA], bodies[m.bodyB]);
         const Vec3 deltaCentres = pair.b.deltaPosition - pair.a.deltaPosition;
         // (12.4): forth and back over the points, so that a face's impulses carry no bias of
@@ -242,14 +280,16 @@ void solveSoft(std::span<SoftManifold> manifolds, std::span<SoftBody> bodies,
             solveFriction(pair, m);
         }
         pair.store();
-    }
+    });
 }
 
-void restituteSoft(std::span<SoftManifold> manifolds, std::span<SoftBody> bodies, Real threshold)
+void restituteSoft(std::span<SoftManifold> manifolds, std::span<SoftBody> bodies, Real threshold,
+                   const SoftColours& colours, int threads)
 {
-    for (SoftManifold& m : manifolds) {
+    forEachManifold(manifolds.size(), colours, threads, [&](std::size_t index) {
+        SoftManifold& m = manifolds[index];
         if (m.restitution == 0.0) {
-            continue;
+            return;
         }
         SoftPair pair(bodies[m.bodyA], bodies[m.bodyB]);
         const auto restitute = [&](SoftPoint& p) {
@@ -276,7 +316,7 @@ void restituteSoft(std::span<SoftManifold> manifolds, std::span<SoftBody> bodies
             }
         }
         pair.store();
-    }
+    });
 }
 
 } // namespace tumble

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <vector>
 
 namespace tumble {
 
@@ -106,18 +107,27 @@ struct SoftSolveSettings {
     Real pushSpeed = 0.0;
 };
 
-/// Applies each manifold's accumulated impulses to its bodies (12.5).
-void warmStartSoft(std::span<const SoftManifold> manifolds, std::span<SoftBody> bodies);
+/// The manifolds' order for the passes: colour c is manifolds [offsets[c], offsets[c + 1]) and
+/// no two of them move the same dynamic body; the last group is the overflow, swept in order.
+/// With no offsets every pass goes in order.
+struct SoftColours {
+    std::vector<std::uint32_t> offsets;
+};
 
-/// One Gauss-Seidel pass over the manifolds in order: each point's normal row, soft and biased
+/// Applies each manifold's accumulated impulses to its bodies (12.5).
+void warmStartSoft(std::span<const SoftManifold> manifolds, std::span<SoftBody> bodies,
+                   const SoftColours& colours, int threads);
+
+/// One Gauss-Seidel pass over the manifolds in `colours` order: each point's normal row, soft and biased
 /// towards closing its gap when `useBias` (12.4); rigid and unbiased when not (the relax pass),
 /// followed by the manifold's twist row and its friction disc of radius mu sum lambda_n (12.5).
 void solveSoft(std::span<SoftManifold> manifolds, std::span<SoftBody> bodies,
-               const SoftSolveSettings& settings, bool useBias);
+               const SoftSolveSettings& settings, bool useBias, const SoftColours& colours,
+               int threads);
 
 /// (12.6): each point that pushed and began the step approaching faster than `threshold` gets
 /// the normal impulse that makes it leave at e times its approach speed, never pulling.
 void restituteSoft(std::span<SoftManifold> manifolds, std::span<SoftBody> bodies,
-                   Real threshold);
+                   Real threshold, const SoftColours& colours, int threads);
 
 } // namespace tumble

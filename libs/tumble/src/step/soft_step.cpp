@@ -4,6 +4,7 @@
 #include "step/soft_step.hpp"
 
 #include "body_state.hpp"
+#include "dynamics/constraint_colouring.hpp"
 #include "dynamics/energy_booking.hpp"
 #include "dynamics/soft_contact_solver.hpp"
 #include "step/island_contacts.hpp"
@@ -21,6 +22,11 @@ struct SoftBuffers {
     std::vector<IslandContact> contacts;
     std::vector<Vec3> centres;
     std::vector<SoftManifold> manifolds;
+    SoftColours colours;
+    std::vector<IslandContact> spareContacts;
+    std::vector<SoftManifold> spareManifolds;
+    std::vector<ProxyPair> ends;
+    std::vector<std::uint8_t> isStatic;
     std::vector<SoftBody> bodies;
     std::vector<Real> energies;
     std::vector<Real> kineticStart;
@@ -101,6 +107,7 @@ public:
 
 private:
     void prepare(Real h);
+    void orderByColour();
     void substep(Real h, const SoftSolveSettings& solve);
     void finish();
     /// Adds to each body's work what its kinetic energy gained since `m_buffers.kinetic`.
@@ -132,7 +139,8 @@ void SoftStep::run(Real dt)
         substep(h, solve);
     }
     saveKinetic();
-    restituteSoft(m_buffers.manifolds, m_buffers.bodies, m_settings.restitutionThreshold);
+    restituteSoft(m_buffers.manifolds, m_buffers.bodies, m_settings.restitutionThreshold,
+                  m_buffers.colours, m_context.threads);
     addBodyWork();
     finish();
     ++m_events.statistics.islands;
@@ -173,9 +181,35 @@ void SoftStep::prepare(Real h)
         points += static_cast<std::size_t>(m_buffers.manifolds[k].pointCount);
     }
     m_events.statistics.contactPoints += points;
+    orderByColour();
     // (12.5): last step's impulses, matched by the other side and the points' feature keys
     loadSoftWarmStart(m_island, m_slots, m_buffers.contacts, m_buffers.manifolds,
                       m_settings.contactTolerance);
+}
+
+void SoftStep::orderByColour()
+{
+    // (10.5): the manifolds colour by colour, whatever the threads, so every pass sweeps them in
+    // the same order and a large colour can be split over the threads (11.5c)
+    const std::size_t count = m_island.bodies.size();
+    std::vector<SoftManifold>& manifolds = m_buffers.manifolds;
+    m_buffers.ends.resize(manifolds.size());
+    for (std::size_t k = 0; k < manifolds.size(); ++k) {
+        m_buffers.ends[k] = ProxyPair{manifolds[k].bodyA, manifolds[k].bodyB};
+    }
+    m_buffers.isStatic.assign(count + 1, 0);
+    m_buffers.isStatic[count] = 1;
+    const ConstraintColours colours =
+        colourConstraints(m_buffers.ends, m_buffers.isStatic, kMaxConstraintColours);
+    m_buffers.spareContacts.resize(manifolds.size());
+    m_buffers.spareManifolds.resize(manifolds.size());
+    for (std::size_t k = 0; k < manifolds.size(); ++k) {
+        m_buffers.spareContacts[k] = m_buffers.contacts[colours.constraints[k]];
+        m_buffers.spareManifolds[k] = manifolds[colours.constraints[k]];
+    }
+    std::swap(m_buffers.contacts, m_buffers.spareContacts);
+    std::swap(m_buffers.manifolds, m_buffers.spareManifolds);
+    m_buffers.colours.offsets = colours.offsets;
 }
 
 void SoftStep::substep(Real h, const SoftSolveSettings& solve)
@@ -186,8 +220,10 @@ void SoftStep::substep(Real h, const SoftSolveSettings& solve)
         bodies[i].linearVelocity += m_settings.gravity * h;
     }
     saveKinetic();
-    warmStartSoft(m_buffers.manifolds, bodies);
-    solveSoft(m_buffers.manifolds, bodies, solve, true);
+    const SoftColours& colours = m_buffers.colours;
+    const int threads = m_context.threads;
+    warmStartSoft(m_buffers.manifolds, bodies, colours, threads);
+    solveSoft(m_buffers.manifolds, bodies, solve, true, colours, threads);
     // (12.4): positions from the solved velocities, the orientation to first order, normalised
     for (std::size_t i = 0; i < count; ++i) {
         SoftBody& b = bodies[i];
@@ -197,7 +233,7 @@ void SoftStep::substep(Real h, const SoftSolveSettings& solve)
         b.deltaRotation =
             glm::mat3_cast(b.orientation) * glm::transpose(body(i).rotation());
     }
-    solveSoft(m_buffers.manifolds, bodies, solve, false);
+    solveSoft(m_buffers.manifolds, bodies, solve, false, colours, threads);
     addBodyWork();
 }
 
