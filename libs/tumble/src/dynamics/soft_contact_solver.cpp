@@ -110,14 +110,27 @@ struct SoftPair {
     }
 };
 
+/// What (12.3) needs of how a manifold's bodies moved since the step began: n . (dpB - dpA), and
+/// the normal turned back by each rotation, dR^T n, so that n . (dR r) = (dR^T n) . r.
+struct SoftMotion {
+    Real centres = 0.0;
+    Vec3 normalA{0.0};
+    Vec3 normalB{0.0};
+
+    SoftMotion(const SoftManifold& m, const SoftBody& a, const SoftBody& b)
+        : centres(glm::dot(m.normal, b.deltaPosition - a.deltaPosition)),
+          normalA(m.normal * a.deltaRotation), normalB(m.normal * b.deltaRotation)
+    {
+    }
+};
+
 /// (12.4): the normal row of one point, soft and biased or (the relax pass) rigid.
-void solveNormal(SoftPair& pair, const SoftManifold& m, SoftPoint& p, const Vec3& deltaCentres,
+void solveNormal(SoftPair& pair, const SoftManifold& m, SoftPoint& p, const SoftMotion& motion,
                  const SoftSolveSettings& settings, bool useBias)
 {
     // the gap now, from how far the bodies moved and turned since the step began (12.3)
-    const Vec3 movedA = pair.a.deltaRotation * p.anchorA;
-    const Vec3 movedB = pair.b.deltaRotation * p.anchorB;
-    const Real gap = glm::dot(m.normal, deltaCentres + movedB - movedA) + p.baseSeparation;
+    const Real gap = motion.centres + glm::dot(motion.normalB, p.anchorB) -
+                     glm::dot(motion.normalA, p.anchorA) + p.baseSeparation;
     Real bias = 0.0;
     Real massScale = 1.0;
     Real impulseScale = 0.0;
@@ -266,14 +279,14 @@ void solveSoft(std::span<SoftManifold> manifolds, std::span<SoftBody> bodies,
     forEachManifold(manifolds.size(), colours, threads, [&](std::size_t index) {
         SoftManifold& m = manifolds[index];
         SoftPair pair(bodies[m.bodyA], bodies[m.bodyB]);
-        const Vec3 deltaCentres = pair.b.deltaPosition - pair.a.deltaPosition;
+        const SoftMotion motion(m, pair.a, pair.b);
         // (12.4): forth and back over the points, so that a face's impulses carry no bias of
         // the order in which its points come
         for (int k = 0; k < m.pointCount; ++k) {
-            solveNormal(pair, m, m.points[k], deltaCentres, settings, useBias);
+            solveNormal(pair, m, m.points[k], motion, settings, useBias);
         }
         for (int k = m.pointCount - 1; k >= 0; --k) {
-            solveNormal(pair, m, m.points[k], deltaCentres, settings, useBias);
+            solveNormal(pair, m, m.points[k], motion, settings, useBias);
         }
         // friction acts in the relax pass only, whose velocities the step keeps (12.5)
         if (!useBias) {
