@@ -2,6 +2,8 @@
 // sliding with a = g (sin t - mu cos t), holding when mu >= tan t, tipping when tan t > w / h.
 #include "tumble/world.hpp"
 
+#include "support/slope_world.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,28 +14,12 @@ namespace {
 constexpr Real kPi = 3.14159265358979323846;
 constexpr Real kGravity = 9.81;
 
-struct Slope {
-    World world{WorldSettings{.allowSleep = false}};
-    BodyId box{};
-    Vec3 downhill{0.0};
-};
+using testing::Slope;
 
-/// A plane through the origin tilted by `degrees` about z (rising with x), and a box of
-/// width and depth `width`, height `height`, resting on it at the origin.
 Slope makeSlope(Real degrees, Real friction, Real width, Real height)
 {
-    Slope slope;
-    const Real angle = degrees * kPi / 180.0;
-    const Vec3 normal(-std::sin(angle), std::cos(angle), 0.0);
-    slope.world.addPlane(StaticPlane{.point = Vec3(0.0), .normal = normal});
-    slope.downhill = Vec3(-std::cos(angle), -std::sin(angle), 0.0);
-    slope.box = slope.world.createBody(
-        BodyDef{.shape = Cuboid{Vec3(width, height, width)},
-                .mass = 1.0,
-                .position = 0.5 * height * normal,
-                .orientation = axisAngle(Vec3(0, 0, 1), angle),
-                .material = Material{.restitution = 0.0, .friction = friction}});
-    return slope;
+    return testing::makeSlope(degrees, friction, width, height,
+                              WorldSettings{.allowSleep = false});
 }
 
 void run(Slope& slope, Real duration, Real dt)

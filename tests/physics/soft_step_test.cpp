@@ -4,6 +4,7 @@
 #include "tumble/state_hash.hpp"
 #include "tumble/world.hpp"
 
+#include "support/slope_world.hpp"
 #include "support/test_world.hpp"
 
 #include <gtest/gtest.h>
@@ -96,25 +97,11 @@ TEST(SoftStep, AColumnOfTwentyStandsOnlyOnSpringsStiffEnoughNotToBuckle)
     }
 }
 
-struct Slope {
-    World world{softSettings()};
-    BodyId box{};
-    Vec3 downhill{0.0};
-};
+using testing::Slope;
 
 Slope makeSlope(Real degrees, Real friction)
 {
-    Slope slope;
-    const Real angle = degrees * kPi / 180.0;
-    const Vec3 normal(-std::sin(angle), std::cos(angle), 0.0);
-    slope.world.addPlane(StaticPlane{.point = Vec3(0.0), .normal = normal});
-    slope.downhill = Vec3(-std::cos(angle), -std::sin(angle), 0.0);
-    slope.box = slope.world.createBody(
-        BodyDef{.shape = Cuboid{Vec3(1.0)},
-                .position = 0.5 * normal,
-                .orientation = axisAngle(Vec3(0, 0, 1), angle),
-                .material = Material{.restitution = 0.0, .friction = friction}});
-    return slope;
+    return testing::makeSlope(degrees, friction, 1.0, 1.0, softSettings());
 }
 
 TEST(SoftStep, SlidesDownASlopeAtGTimesSinMinusMuCos)
