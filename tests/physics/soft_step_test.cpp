@@ -214,5 +214,35 @@ TEST(SoftStep, APileComesToRestTheSameForAnyThreadsAndItsLedgersBalance)
     }
 }
 
+/// Three layers of 10 x 10 cubes, each layer dropped 0.2 m onto the one below, with a twist:
+/// one island of some 2 000 pairs, which takes all the threads inside its step (11.5c).
+World dropLayers(int threads)
+{
+    WorldSettings settings = softSettings();
+    settings.threads = threads;
+    World world = testing::worldWithGround(settings);
+    for (int layer = 0; layer < 3; ++layer) {
+        for (int i = 0; i < 100; ++i) {
+            const Real x = (i % 10) * 1.0 - 4.5 + 0.3 * layer;
+            const Real z = (i / 10) * 1.0 - 4.5;
+            world.createBody(BodyDef{.shape = Cuboid{Vec3(1.0)},
+                                     .position = Vec3(x, 0.5 + 1.2 * layer, z),
+                                     .orientation = axisAngle(Vec3(0, 1, 0), 0.01 * layer),
+                                     .material = Material{.restitution = 0.2, .friction = 0.5}});
+        }
+    }
+    return world;
+}
+
+TEST(SoftStep, ALargeIslandGivesTheSameBitsOnOneAndTwoThreads)
+{
+    World one = dropLayers(1);
+    World two = dropLayers(2);
+    testing::simulate(one, 1.0, 1.0 / 60.0);
+    testing::simulate(two, 1.0, 1.0 / 60.0);
+    EXPECT_GE(one.solverStatistics().contactPoints, 1024u);
+    EXPECT_EQ(stateHash(one), stateHash(two));
+}
+
 } // namespace
 } // namespace tumble

@@ -9,6 +9,7 @@
 #include "dynamics/soft_contact_solver.hpp"
 #include "step/island_contacts.hpp"
 #include "step/soft_warm_start.hpp"
+#include "parallel_for.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -161,30 +162,31 @@ void SoftStep::prepare(Real h)
     m_buffers.kineticStart.resize(count);
     m_buffers.bodyWork.assign(count, 0.0);
     m_buffers.bodies.assign(count + 1, SoftBody{});
-    for (std::size_t i = 0; i < count; ++i) {
+    m_buffers.centres.resize(count);
+    // each body, each manifold and each kept impulse below writes only its own entry
+    parallelFor(count, m_context.threads, [&](std::size_t i) {
         m_buffers.energies[i] = energyOf(body(i), m_settings.gravity);
         m_buffers.kineticStart[i] = body(i).kineticEnergy();
         m_buffers.bodies[i] = softBodyOf(body(i));
-    }
+        m_buffers.centres[i] = body(i).position;
+    });
     // narrow phase once a step: every point the bodies can reach within it (12.1)
     const Real dt = h * std::max(1, m_settings.softSubsteps);
     findIslandContacts(m_island, m_slots, m_context, dt, m_buffers.contacts);
-    m_buffers.centres.resize(count);
-    for (std::size_t i = 0; i < count; ++i) {
-        m_buffers.centres[i] = body(i).position;
-    }
     m_buffers.manifolds.resize(m_buffers.contacts.size());
-    std::size_t points = 0;
-    for (std::size_t k = 0; k < m_buffers.contacts.size(); ++k) {
+    parallelFor(m_buffers.contacts.size(), m_context.threads, [&](std::size_t k) {
         m_buffers.manifolds[k] = softManifoldOf(m_buffers.contacts[k], m_buffers.bodies,
                                                 m_buffers.centres, count);
-        points += static_cast<std::size_t>(m_buffers.manifolds[k].pointCount);
+    });
+    std::size_t points = 0;
+    for (const IslandContact& contact : m_buffers.contacts) {
+        points += static_cast<std::size_t>(contact.manifold.pointCount);
     }
     m_events.statistics.contactPoints += points;
     orderByColour();
     // (12.5): last step's impulses, matched by the other side and the points' feature keys
     loadSoftWarmStart(m_island, m_slots, m_buffers.contacts, m_buffers.manifolds,
-                      m_settings.contactTolerance);
+                      m_settings.contactTolerance, m_context.threads);
 }
 
 void SoftStep::orderByColour()
@@ -203,10 +205,10 @@ void SoftStep::orderByColour()
         colourConstraints(m_buffers.ends, m_buffers.isStatic, kMaxConstraintColours);
     m_buffers.spareContacts.resize(manifolds.size());
     m_buffers.spareManifolds.resize(manifolds.size());
-    for (std::size_t k = 0; k < manifolds.size(); ++k) {
+    parallelFor(manifolds.size(), m_context.threads, [&](std::size_t k) {
         m_buffers.spareContacts[k] = m_buffers.contacts[colours.constraints[k]];
         m_buffers.spareManifolds[k] = manifolds[colours.constraints[k]];
-    }
+    });
     std::swap(m_buffers.contacts, m_buffers.spareContacts);
     std::swap(m_buffers.manifolds, m_buffers.spareManifolds);
     m_buffers.colours.offsets = colours.offsets;
@@ -216,23 +218,21 @@ void SoftStep::substep(Real h, const SoftSolveSettings& solve)
 {
     const std::size_t count = m_island.bodies.size();
     std::vector<SoftBody>& bodies = m_buffers.bodies;
-    for (std::size_t i = 0; i < count; ++i) {
-        bodies[i].linearVelocity += m_settings.gravity * h;
-    }
+    parallelFor(count, m_context.threads,
+                [&](std::size_t i) { bodies[i].linearVelocity += m_settings.gravity * h; });
     saveKinetic();
     const SoftColours& colours = m_buffers.colours;
     const int threads = m_context.threads;
     warmStartSoft(m_buffers.manifolds, bodies, colours, threads);
     solveSoft(m_buffers.manifolds, bodies, solve, true, colours, threads);
     // (12.4): positions from the solved velocities, the orientation to first order, normalised
-    for (std::size_t i = 0; i < count; ++i) {
+    parallelFor(count, m_context.threads, [&](std::size_t i) {
         SoftBody& b = bodies[i];
         b.deltaPosition += h * b.linearVelocity;
         const Quat spin(0.0, b.angularVelocity.x, b.angularVelocity.y, b.angularVelocity.z);
         b.orientation = glm::normalize(b.orientation + (0.5 * h) * (spin * b.orientation));
-        b.deltaRotation =
-            glm::mat3_cast(b.orientation) * glm::transpose(body(i).rotation());
-    }
+        b.deltaRotation = glm::mat3_cast(b.orientation) * glm::transpose(body(i).rotation());
+    });
     solveSoft(m_buffers.manifolds, bodies, solve, false, colours, threads);
     addBodyWork();
 }
@@ -241,26 +241,27 @@ void SoftStep::saveKinetic()
 {
     const std::size_t count = m_island.bodies.size();
     m_buffers.kinetic.resize(count);
-    for (std::size_t i = 0; i < count; ++i) {
+    parallelFor(count, m_context.threads, [&](std::size_t i) {
         m_buffers.kinetic[i] = kineticEnergyWith(body(i), m_buffers.bodies[i].linearVelocity,
                                                  m_buffers.bodies[i].angularVelocity);
-    }
+    });
 }
 
 void SoftStep::addBodyWork()
 {
-    for (std::size_t i = 0; i < m_island.bodies.size(); ++i) {
+    parallelFor(m_island.bodies.size(), m_context.threads, [&](std::size_t i) {
         m_buffers.bodyWork[i] += kineticEnergyWith(body(i), m_buffers.bodies[i].linearVelocity,
                                                    m_buffers.bodies[i].angularVelocity) -
                                  m_buffers.kinetic[i];
-    }
+    });
 }
 
 void SoftStep::finish()
 {
     const std::size_t count = m_island.bodies.size();
     // (12.5): the last sub-step's impulses start the next step's sub-steps
-    storeSoftWarmStart(m_island, m_slots, m_buffers.contacts, m_buffers.manifolds);
+    storeSoftWarmStart(m_island, m_slots, m_buffers.contacts, m_buffers.manifolds,
+                       m_context.threads);
     IslandWork total;
     for (const SoftManifold& m : m_buffers.manifolds) {
         for (int k = 0; k < m.pointCount; ++k) {
@@ -274,7 +275,7 @@ void SoftStep::finish()
     }
     const std::vector<ContactWork> work =
         shareIslandWork(total, m_buffers.bodyWork, m_buffers.kineticStart, inverse);
-    for (std::size_t i = 0; i < count; ++i) {
+    parallelFor(count, m_context.threads, [&](std::size_t i) {
         Body& b = body(i);
         const SoftBody& soft = m_buffers.bodies[i];
         b.position += soft.deltaPosition;
@@ -284,7 +285,7 @@ void SoftStep::finish()
         refreshWorldInertia(b);
         bookContact(b, work[i], energyOf(b, m_settings.gravity) - m_buffers.energies[i], false);
         m_slots[m_island.bodies[i]].touchingGround = false;
-    }
+    });
     // a body touches when one of its points pushed in the last sub-step (7.1)
     for (const SoftManifold& m : m_buffers.manifolds) {
         const bool pushed = std::any_of(m.points.begin(), m.points.begin() + m.pointCount,

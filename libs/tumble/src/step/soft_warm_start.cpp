@@ -1,6 +1,9 @@
 // The soft step's warm start (docs/physics/12-soft-step.md, (12.5)).
 #include "step/soft_warm_start.hpp"
 
+#include "parallel_for.hpp"
+#include "step/owner_groups.hpp"
+
 #include <algorithm>
 
 namespace tumble {
@@ -57,9 +60,10 @@ std::array<int, 4> matchPoints(const IslandContact& contact, const CachedSoftCon
 
 void loadSoftWarmStart(const CoupledIsland& island, std::span<const BodySlot> slots,
                        std::span<const IslandContact> contacts, std::span<SoftManifold> manifolds,
-                       Real tolerance)
+                       Real tolerance, int threads)
 {
-    for (std::size_t index = 0; index < contacts.size(); ++index) {
+    // each contact reads its owner's cache and writes only its own manifold
+    parallelFor(contacts.size(), threads, [&](std::size_t index) {
         const IslandContact& contact = contacts[index];
         SoftManifold& m = manifolds[index];
         const std::vector<CachedSoftContact>& cache =
@@ -68,7 +72,7 @@ void loadSoftWarmStart(const CoupledIsland& island, std::span<const BodySlot> sl
             return c.other == contact.ownerKey;
         });
         if (kept == cache.end()) {
-            continue;
+            return;
         }
         const Body& owner = slots[island.bodies[contact.owner]].body;
         const std::array<int, 4> match =
@@ -81,33 +85,45 @@ void loadSoftWarmStart(const CoupledIsland& island, std::span<const BodySlot> sl
         m.frictionImpulse1 = glm::dot(m.tangent1, kept->frictionImpulse);
         m.frictionImpulse2 = glm::dot(m.tangent2, kept->frictionImpulse);
         m.twistImpulse = kept->twistImpulse;
-    }
+    });
 }
 
 void storeSoftWarmStart(const CoupledIsland& island, std::span<BodySlot> slots,
                         std::span<const IslandContact> contacts,
-                        std::span<const SoftManifold> manifolds)
+                        std::span<const SoftManifold> manifolds, int threads)
 {
+    // each owner's cache is written by its own contacts only, in their order
+    thread_local std::vector<std::uint32_t> keptOwnerOf;
+    thread_local OwnerGroups keptGroups;
+    std::vector<std::uint32_t>& ownerOf = keptOwnerOf;
+    OwnerGroups& groups = keptGroups;
+    ownerOf.resize(contacts.size());
+    for (std::size_t index = 0; index < contacts.size(); ++index) {
+        ownerOf[index] = contacts[index].owner;
+    }
+    groups.build(ownerOf, island.bodies.size());
     for (const std::uint32_t slot : island.bodies) {
         slots[slot].softContacts.clear();
     }
-    for (std::size_t index = 0; index < contacts.size(); ++index) {
-        const IslandContact& contact = contacts[index];
-        const SoftManifold& m = manifolds[index];
-        BodySlot& slot = slots[island.bodies[contact.owner]];
-        const Body& owner = slot.body;
-        CachedSoftContact kept;
-        kept.other = contact.ownerKey;
-        kept.pointCount = m.pointCount;
-        for (int k = 0; k < m.pointCount; ++k) {
-            kept.ids[k] = contact.manifold.points[k].id;
-            kept.localPositions[k] = inBodyFrame(owner, contact.manifold.points[k].position);
-            kept.normalImpulses[k] = m.points[k].normalImpulse;
+    parallelFor(groups.count(), threads, [&](std::size_t g) {
+        for (const std::uint32_t index : groups.group(g)) {
+            const IslandContact& contact = contacts[index];
+            const SoftManifold& m = manifolds[index];
+            BodySlot& slot = slots[island.bodies[contact.owner]];
+            CachedSoftContact kept;
+            kept.other = contact.ownerKey;
+            kept.pointCount = m.pointCount;
+            for (int k = 0; k < m.pointCount; ++k) {
+                kept.ids[k] = contact.manifold.points[k].id;
+                kept.localPositions[k] = inBodyFrame(slot.body, contact.manifold.points[k].position);
+                kept.normalImpulses[k] = m.points[k].normalImpulse;
+            }
+            kept.frictionImpulse =
+                m.frictionImpulse1 * m.tangent1 + m.frictionImpulse2 * m.tangent2;
+            kept.twistImpulse = m.twistImpulse;
+            slot.softContacts.push_back(kept);
         }
-        kept.frictionImpulse = m.frictionImpulse1 * m.tangent1 + m.frictionImpulse2 * m.tangent2;
-        kept.twistImpulse = m.twistImpulse;
-        slot.softContacts.push_back(kept);
-    }
+    });
 }
 
 } // namespace tumble
