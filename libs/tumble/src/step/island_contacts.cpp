@@ -311,4 +311,16 @@ void buildConstraints(std::span<IslandContact> contacts, std::span<const BodySlo
     });
 }
 
+const OwnerGroups& contactsByOwner(std::span<const IslandContact> contacts, std::size_t bodies)
+{
+    thread_local std::vector<std::uint32_t> ownerOf;
+    thread_local OwnerGroups groups;
+    ownerOf.resize(contacts.size());
+    for (std::size_t index = 0; index < contacts.size(); ++index) {
+        ownerOf[index] = contacts[index].owner;
+    }
+    groups.build(ownerOf, bodies);
+    return groups;
+}
+
 } // namespace tumble

@@ -6,6 +6,7 @@
 #include "collision/pair_manifold.hpp"
 #include "dynamics/contact_constraint.hpp"
 #include "step/coupled_step.hpp"
+#include "step/owner_groups.hpp"
 #include "step/step_context.hpp"
 
 #include <span>
@@ -72,6 +73,11 @@ const CuboidPairGeometry& pairGeometry(std::span<BodySlot> slots, std::uint32_t 
 void findIslandContacts(const CoupledIsland& island, std::span<BodySlot> slots,
                         const StepContext& context, Real horizon,
                         std::vector<IslandContact>& contacts);
+
+/// The island's contacts grouped by the body that keeps their warm start (IslandContact::owner),
+/// each group in the contacts' order, so that each owner's cache can be written on its own
+/// thread as from one pass. The groups live in the calling thread's storage until its next call.
+const OwnerGroups& contactsByOwner(std::span<const IslandContact> contacts, std::size_t bodies);
 
 /// One constraint per contact point, with the geometry, material, tangent basis, Jacobian rows
 /// and effective masses set (prepareConstraintGeometry, with the bodies' inverse masses and

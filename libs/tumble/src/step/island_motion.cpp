@@ -156,15 +156,7 @@ void storeWarmStart(const CoupledIsland& island, std::span<BodySlot> slots,
                     std::span<const ContactConstraint> constraints, Real tau, int threads)
 {
     // each body's cache is written by its own contacts only, in their order (as from one pass)
-    thread_local std::vector<std::uint32_t> keptOwnerOf;
-    thread_local OwnerGroups keptGroups;
-    std::vector<std::uint32_t>& ownerOf = keptOwnerOf;
-    OwnerGroups& groups = keptGroups;
-    ownerOf.resize(contacts.size());
-    for (std::size_t index = 0; index < contacts.size(); ++index) {
-        ownerOf[index] = contacts[index].owner;
-    }
-    groups.build(ownerOf, island.bodies.size());
+    const OwnerGroups& groups = contactsByOwner(contacts, island.bodies.size());
     for (const std::uint32_t slot : island.bodies) {
         slots[slot].contactCache.clear();
     }

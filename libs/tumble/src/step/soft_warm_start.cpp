@@ -93,15 +93,7 @@ void storeSoftWarmStart(const CoupledIsland& island, std::span<BodySlot> slots,
                         std::span<const SoftManifold> manifolds, int threads)
 {
     // each owner's cache is written by its own contacts only, in their order
-    thread_local std::vector<std::uint32_t> keptOwnerOf;
-    thread_local OwnerGroups keptGroups;
-    std::vector<std::uint32_t>& ownerOf = keptOwnerOf;
-    OwnerGroups& groups = keptGroups;
-    ownerOf.resize(contacts.size());
-    for (std::size_t index = 0; index < contacts.size(); ++index) {
-        ownerOf[index] = contacts[index].owner;
-    }
-    groups.build(ownerOf, island.bodies.size());
+    const OwnerGroups& groups = contactsByOwner(contacts, island.bodies.size());
     for (const std::uint32_t slot : island.bodies) {
         slots[slot].softContacts.clear();
     }
