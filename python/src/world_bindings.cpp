@@ -45,7 +45,8 @@ std::optional<Material> surfaceMaterial(std::optional<double> elasticity,
 }
 
 std::shared_ptr<WorldState> makeWorld(const Triple& gravity, const std::string& integrator,
-                                      const std::string& response, int threads, bool allowSleep)
+                                      const std::string& response, int threads, bool allowSleep,
+                                      const std::string& solver)
 {
     WorldSettings settings;
     settings.gravity = finiteVec3(gravity, "gravity");
@@ -62,6 +63,10 @@ std::shared_ptr<WorldState> makeWorld(const Triple& gravity, const std::string& 
     }
     settings.threads = threads;
     settings.allowSleep = allowSleep;
+    settings.solver = choose(solver,
+                             std::array{std::pair{"exact", ContactSolver::Exact},
+                                        std::pair{"soft", ContactSolver::Soft}},
+                             "solver");
     return std::make_shared<WorldState>(WorldState{World(settings), {}, {}, false});
 }
 
@@ -227,12 +232,16 @@ Units are SI (m, kg, s, rad); y is up. Bodies are reached through the handles ad
 )doc");
     world.def(py::init(&makeWorld), py::arg("gravity") = Triple{0.0, -9.81, 0.0},
               py::arg("integrator") = "exact", py::arg("response") = "sequential",
-              py::arg("threads") = 1, py::arg("allow_sleep") = true, R"doc(
+              py::arg("threads") = 1, py::arg("allow_sleep") = true,
+              py::arg("solver") = "exact", R"doc(
 gravity: acceleration, m/s^2.
 integrator: "exact" (angular momentum conserved exactly) or "handout" (R += dt [w]x R).
 response: "sequential" (impulses per contact point) or "average" (the handouts' single impulse).
 threads: threads a step spreads the bodies over (0: one per core); results do not depend on it.
 allow_sleep: whether a body at rest is put to sleep (velocities zeroed until woken).
+solver: how bodies that touch each other are solved: "exact" (impacts in time order, contacts
+    to a tolerance) or "soft" (the fixed-cost soft step of Box2D v3 and Box3D,
+    docs/physics/12-soft-step.md); a body alone with the ground takes the exact path either way.
 )doc");
     world.def_property(
         "gravity", [](WorldState& s) { return toArray(s.checked().settings().gravity); },

@@ -159,6 +159,21 @@ def test_a_plane_and_a_wall_stop_a_sliding_box():
     assert rb.position[0] == pytest.approx(2.0, abs=1e-2)
 
 
+def test_the_soft_solver_is_chosen_by_name_and_stacks_on_its_springs():
+    # docs/physics/12-soft-step.md (12.2a): two unit cubes of mass 1 on the ground; the ground's
+    # 60 Hz corner springs (effective mass 1/4, four corners) hold their weight 2 g at a depth
+    # of 2 g / (4 * 1/4 * (2 pi 60)^2)
+    with pytest.raises(ValueError, match="solver"):
+        tumble.World(solver="squishy")
+    world = tumble.World(solver="soft", allow_sleep=False)
+    world.add_ground()
+    bottom = world.add_body(size=(1, 1, 1), mass=1.0, position=(0, 0.5, 0), elasticity=0.0)
+    world.add_body(size=(1, 1, 1), mass=1.0, position=(0, 1.5, 0), elasticity=0.0)
+    world.run(duration=3.0, dt=1 / 60)
+    depth = 2 * 9.81 / (4 * 0.25 * (2 * np.pi * 60) ** 2)
+    assert 0.5 - bottom.position[1] == pytest.approx(depth, rel=0.02)
+
+
 def test_gravity_and_help_are_there():
     world = tumble.World(gravity=(0, -1.62, 0))
     np.testing.assert_allclose(world.gravity, (0, -1.62, 0))
