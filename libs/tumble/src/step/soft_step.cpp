@@ -7,6 +7,7 @@
 #include "dynamics/constraint_colouring.hpp"
 #include "dynamics/energy_booking.hpp"
 #include "dynamics/soft_contact_solver.hpp"
+#include "dynamics/solver_point.hpp"
 #include "step/island_contacts.hpp"
 #include "step/soft_warm_start.hpp"
 #include "parallel_for.hpp"
@@ -33,6 +34,7 @@ struct SoftBuffers {
     std::vector<Real> kineticStart;
     std::vector<Real> bodyWork;
     std::vector<Real> kinetic;
+    std::vector<SolverBody> inverseMasses;
 };
 
 SoftBuffers& threadBuffers()
@@ -40,10 +42,6 @@ SoftBuffers& threadBuffers()
     thread_local SoftBuffers buffers;
     return buffers;
 }
-
-/// Below this sliding speed at the step's start a point sticks, and the static coefficient
-/// bounds its friction (6.2), m/s.
-constexpr Real kStickingSpeed = 1e-3;
 
 SoftBody softBodyOf(const Body& body)
 {
@@ -90,7 +88,7 @@ SoftManifold softManifoldOf(const IslandContact& contact, std::span<const SoftBo
     const Vec3 centreVelocity = b.linearVelocity + glm::cross(b.angularVelocity, m.centreB) -
                                 a.linearVelocity - glm::cross(a.angularVelocity, m.centreA);
     const Vec3 sliding = centreVelocity - glm::dot(m.normal, centreVelocity) * m.normal;
-    m.friction = lengthSquared(sliding) < kStickingSpeed * kStickingSpeed ? contact.staticFriction
+    m.friction = lengthSquared(sliding) < kStickingSpeedSquared ? contact.staticFriction
                                                                          : contact.friction;
     return m;
 }
@@ -269,7 +267,8 @@ void SoftStep::finish()
         }
         total.friction += m.frictionWork;
     }
-    std::vector<SolverBody> inverse(count);
+    std::vector<SolverBody>& inverse = m_buffers.inverseMasses;
+    inverse.resize(count);
     for (std::size_t i = 0; i < count; ++i) {
         inverse[i].invMass = m_buffers.bodies[i].invMass;
     }
