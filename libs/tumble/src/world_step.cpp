@@ -77,12 +77,13 @@ void World::findPairs(detail::StepScratch& scratch, Real dt)
     // body near another but apart keeps the exact path (10.4)
     const std::span<const ProxyPair> pairs = scratch.broadPhase.pairs();
     scratch.pairTouches.assign(pairs.size(), 0);
+    // the soft step carries a pair's geometry with its bodies (9.12)
+    const bool carry = m_settings.solver == ContactSolver::Soft;
     const auto testPair = [&](std::size_t k) {
         const std::uint32_t a = scratch.proxies[pairs[k].a].body;
         const std::uint32_t b = scratch.proxies[pairs[k].b].body;
-        scratch.pairTouches[k] =
-            mayTouch(m_slots, std::min(a, b), std::max(a, b), m_settings.gravity, dt, margin) ? 1
-                                                                                              : 0;
+        scratch.pairTouches[k] = mayTouch(m_slots, std::min(a, b), std::max(a, b),
+                                          m_settings.gravity, dt, margin, carry) ? 1 : 0;
     };
     const int threads = pairs.size() >= kLargeIslandPairs ? threadCount() : 1;
     if (threads > 1) {

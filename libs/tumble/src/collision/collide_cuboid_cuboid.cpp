@@ -67,6 +67,7 @@ CuboidPairGeometry findCuboidPairGeometry(const CuboidFrame& a, const CuboidFram
         return geometry;
     }
     geometry.normal = search.axis->normal;
+    geometry.normalOfB = search.axis->kind == AxisKind::FaceB;
     geometry.points = search.axis->kind == AxisKind::EdgePair ? edgeContact(a, b, *search.axis)
                                                                : faceContact(a, b, *search.axis);
     return geometry;

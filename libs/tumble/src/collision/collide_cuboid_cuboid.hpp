@@ -26,6 +26,8 @@ struct CuboidPairGeometry {
     /// The contact axis's normal (9.5), from A towards B, and the points of the face clipping
     /// (9.7) or the edge point (9.10), whatever their separation.
     Vec3 normal{0.0, 1.0, 0.0};
+    /// Whether the normal is a face normal of B (a FaceB axis), else of A or of A's edge (9.12).
+    bool normalOfB = false;
     ClippedPoints points{};
 };
 

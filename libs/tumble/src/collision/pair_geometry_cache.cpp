@@ -1,6 +1,8 @@
 // The box-box narrow phase's memory of a body's pairs (docs/physics/09-box-box.md, (9.11)).
 #include "collision/pair_geometry_cache.hpp"
 
+#include "collision/carried_pair_geometry.hpp"
+
 #include <algorithm>
 
 namespace tumble {
@@ -17,10 +19,20 @@ bool withinPairCacheReach(const Transform& pose, const Transform& kept)
                halfAngle * halfAngle;
 }
 
+namespace {
+
+bool samePose(const Transform& a, const Transform& b)
+{
+    return a.position == b.position && a.orientation == b.orientation;
+}
+
+} // namespace
+
 const CuboidPairGeometry& PairGeometryCache::geometry(std::uint32_t other, const Transform& poseA,
                                                       const Vec3& halfExtentsA,
                                                       const Transform& poseB,
-                                                      const Vec3& halfExtentsB, Real margin)
+                                                      const Vec3& halfExtentsB, Real margin,
+                                                      bool carry)
 {
     const auto index =
         static_cast<std::size_t>(std::find(m_others.begin(), m_others.end(), other) -
@@ -32,13 +44,33 @@ const CuboidPairGeometry& PairGeometryCache::geometry(std::uint32_t other, const
     }
     Entry& entry = m_entries[index];
     entry.asked = true;
-    if (known && entry.halfExtentsA == halfExtentsA && entry.halfExtentsB == halfExtentsB &&
-        withinPairCacheReach(poseA, entry.poseA) && withinPairCacheReach(poseB, entry.poseB) &&
-        decidesMargin(entry.geometry, margin)) {
+    const bool sameSizes =
+        known && entry.halfExtentsA == halfExtentsA && entry.halfExtentsB == halfExtentsB;
+    if (sameSizes && withinPairCacheReach(poseA, entry.poseA) &&
+        withinPairCacheReach(poseB, entry.poseB) && decidesMargin(entry.geometry, margin)) {
         return entry.geometry;
+    }
+    if (sameSizes && carry) {
+        // the broad phase's test and then the narrow phase ask at the same poses
+        if (samePose(entry.carriedA, poseA) && samePose(entry.carriedB, poseB) &&
+            decidesMargin(entry.carried, margin)) {
+            return entry.carried;
+        }
+        const Real move = relativeMove(entry.poseA, entry.poseB, poseA, poseB, halfExtentsB);
+        if (move <= carryReach(halfExtentsA, halfExtentsB)) {
+            entry.carried = carryPairGeometry(entry.geometry, entry.poseA, entry.poseB, poseA,
+                                              poseB, move);
+            entry.carriedA = poseA;
+            entry.carriedB = poseB;
+            if (decidesMargin(entry.carried, margin)) {
+                return entry.carried;
+            }
+        }
     }
     entry.poseA = poseA;
     entry.poseB = poseB;
+    // nothing is carried from the new geometry yet
+    entry.carriedA.orientation = Quat(0.0, 0.0, 0.0, 0.0);
     entry.halfExtentsA = halfExtentsA;
     entry.halfExtentsB = halfExtentsB;
     entry.geometry = findCuboidPairGeometry(cuboidFrame(poseA, halfExtentsA),

@@ -24,11 +24,12 @@ bool withinPairCacheReach(const Transform& pose, const Transform& kept);
 class PairGeometryCache {
 public:
     /// The geometry of cuboid A (the lower slot) with cuboid B, deciding `margin` (m): the kept one
-    /// if both poses are within (9.11) of those it was found at and the sizes are the same, else
+    /// if both poses are within (9.11) of those it was found at and the sizes are the same; with
+    /// `carry`, the kept one carried to the poses if B moved relative to A within (9.12); else
     /// found now and kept.
     const CuboidPairGeometry& geometry(std::uint32_t other, const Transform& poseA,
                                        const Vec3& halfExtentsA, const Transform& poseB,
-                                       const Vec3& halfExtentsB, Real margin);
+                                       const Vec3& halfExtentsB, Real margin, bool carry = false);
 
     /// Drops the pairs not asked for since the last call.
     void forgetUnasked();
@@ -48,6 +49,10 @@ private:
         Vec3 halfExtentsA{0.0};
         Vec3 halfExtentsB{0.0};
         CuboidPairGeometry geometry{};
+        /// The last geometry carried from `geometry` (9.12), and the poses it was carried to.
+        CuboidPairGeometry carried{};
+        Transform carriedA{};
+        Transform carriedB{};
     };
     /// The other side of each entry, apart from the entries so that finding one reads little.
     std::vector<std::uint32_t> m_others;

@@ -153,7 +153,7 @@ void CoupledStep::run(Real dt)
     for (int substep = 0;; ++substep) {
         const Real remaining = dt - m_elapsed;
         // narrow phase: every point within reach of the rest of the step
-        findIslandContacts(m_island, m_slots, m_context, remaining, m_contacts);
+        findIslandContacts(m_island, m_slots, m_context, remaining, false, m_contacts);
         orderContactsByColour(m_contacts, count + 1, m_spareContacts, m_context.threads);
         prepareConstraints(substep);
         m_gapMotions.clear();

@@ -135,7 +135,7 @@ Material mixMaterials(const Material& dynamic, const std::optional<Material>& ot
 }
 
 const CuboidPairGeometry& pairGeometry(std::span<BodySlot> slots, std::uint32_t slotA,
-                                       std::uint32_t slotB, Real margin)
+                                       std::uint32_t slotB, Real margin, bool carry)
 {
     const Body& a = slots[slotA].body;
     const Body& b = slots[slotB].body;
@@ -144,22 +144,22 @@ const CuboidPairGeometry& pairGeometry(std::span<BodySlot> slots, std::uint32_t 
     const std::uint32_t other = owner == slotA ? slotB : slotA;
     return slots[owner].pairGeometry.geometry(other, {a.position, a.orientation},
                                               a.shape.halfExtents(), {b.position, b.orientation},
-                                              b.shape.halfExtents(), margin);
+                                              b.shape.halfExtents(), margin, carry);
 }
 
 bool mayTouch(std::span<BodySlot> slots, std::uint32_t slotA, std::uint32_t slotB,
-              const Vec3& gravity, Real horizon, Real tolerance)
+              const Vec3& gravity, Real horizon, Real tolerance, bool carry)
 {
     const Real margin = tolerance + reachOver(slots[slotA].body, gravity, horizon) +
                         reachOver(slots[slotB].body, gravity, horizon);
-    return !(pairGeometry(slots, slotA, slotB, margin).largestSeparation > margin);
+    return !(pairGeometry(slots, slotA, slotB, margin, carry).largestSeparation > margin);
 }
 
 namespace {
 
 /// The contact of one of the island's pairs of bodies, if any point is within the margin.
 bool findPairContact(const CoupledIsland& island, std::span<BodySlot> slots, Real tolerance,
-                     std::span<const Real> reach,
+                     std::span<const Real> reach, bool carry,
                      const std::pair<std::uint32_t, std::uint32_t>& pair, IslandContact& contact)
 {
     const auto [slotA, slotB] = pair;
@@ -168,7 +168,7 @@ bool findPairContact(const CoupledIsland& island, std::span<BodySlot> slots, Rea
     const std::uint32_t solverA = solverIndexOf(island, slotA);
     const std::uint32_t solverB = solverIndexOf(island, slotB);
     const Real margin = tolerance + reach[solverA] + reach[solverB];
-    contact.manifold = manifoldWithin(pairGeometry(slots, slotA, slotB, margin), margin);
+    contact.manifold = manifoldWithin(pairGeometry(slots, slotA, slotB, margin, carry), margin);
     if (contact.manifold.pointCount == 0) {
         return false;
     }
@@ -194,8 +194,8 @@ bool findPairContact(const CoupledIsland& island, std::span<BodySlot> slots, Rea
 /// since a pair writes the geometry its dynamic body keeps (9.11); the contacts then follow
 /// in the order of the pairs, as from one thread (11.5c).
 void findPairContactsOverThreads(const CoupledIsland& island, std::span<BodySlot> slots,
-                                 Real tolerance, std::span<const Real> reach, int threads,
-                                 std::vector<IslandContact>& contacts)
+                                 Real tolerance, std::span<const Real> reach, bool carry,
+                                 int threads, std::vector<IslandContact>& contacts)
 {
     // kept from step to step by the calling thread; the lambda below names them through these
     // references, since a thread_local named there would be each worker's own
@@ -218,7 +218,7 @@ void findPairContactsOverThreads(const CoupledIsland& island, std::span<BodySlot
     found.assign(pairs, 0);
     parallelFor(groups.count(), threads, [&](std::size_t g) {
         for (const std::uint32_t k : groups.group(g)) {
-            found[k] = findPairContact(island, slots, tolerance, reach, island.pairs[k],
+            found[k] = findPairContact(island, slots, tolerance, reach, carry, island.pairs[k],
                                        ofPair[k]) ? 1 : 0;
         }
     });
@@ -243,7 +243,7 @@ void findPairContactsOverThreads(const CoupledIsland& island, std::span<BodySlot
 } // namespace
 
 void findIslandContacts(const CoupledIsland& island, std::span<BodySlot> slots,
-                        const StepContext& context, Real horizon,
+                        const StepContext& context, Real horizon, bool carryGeometry,
                         std::vector<IslandContact>& contacts)
 {
     contacts.clear();
@@ -251,10 +251,11 @@ void findIslandContacts(const CoupledIsland& island, std::span<BodySlot> slots,
     const std::span<const Real> reach =
         islandReach(island, slots, context.settings.gravity, horizon);
     if (context.threads > 1) {
-        findPairContactsOverThreads(island, slots, tolerance, reach, context.threads, contacts);
+        findPairContactsOverThreads(island, slots, tolerance, reach, carryGeometry,
+                                    context.threads, contacts);
     } else {
         for (const auto& pair : island.pairs) {
-            if (!findPairContact(island, slots, tolerance, reach, pair,
+            if (!findPairContact(island, slots, tolerance, reach, carryGeometry, pair,
                                  contacts.emplace_back())) {
                 contacts.pop_back();
             }

@@ -49,9 +49,10 @@ Material mixMaterials(const Material& dynamic, const std::optional<Material>& ot
 /// seconds: no separating axis (9.2) parts them by more than the tolerance plus how far each can
 /// move (the speculative margin of findIslandContacts). A pair whose swept boxes overlap but that
 /// fails this has no contact point in the step, and joins no island (10.4). `slotA < slotB`; the
-/// geometry found is kept for the narrow phase (9.11).
+/// geometry found is kept for the narrow phase (9.11); with `carry` (the soft step) it is carried
+/// within (9.12).
 bool mayTouch(std::span<BodySlot> slots, std::uint32_t slotA, std::uint32_t slotB,
-              const Vec3& gravity, Real horizon, Real tolerance);
+              const Vec3& gravity, Real horizon, Real tolerance, bool carry);
 
 /// The slot whose kept pair geometry (9.11) holds the pair (slotA < slotB): the dynamic body of
 /// the two, the lower if both are. Work on pairs goes to threads grouped by it (11.5c).
@@ -62,16 +63,17 @@ inline std::uint32_t pairGeometryOwner(std::span<const BodySlot> slots, std::uin
 }
 
 /// The box-box geometry of the pair (slotA < slotB) deciding `margin`, kept by its owner
-/// (pairGeometryOwner) under the other side's slot.
+/// (pairGeometryOwner) under the other side's slot; with `carry`, carried within (9.12).
 const CuboidPairGeometry& pairGeometry(std::span<BodySlot> slots, std::uint32_t slotA,
-                                       std::uint32_t slotB, Real margin);
+                                       std::uint32_t slotB, Real margin, bool carry = false);
 
 /// Contacts of the island's bodies at their current poses, every point within a speculative
 /// margin that covers how far the two sides can approach each other over `horizon` seconds.
 /// Writes the pair geometry of the island's bodies only. With `context.threads` > 1 each body's
-/// pairs go to one thread, and the contacts are the same as from one.
+/// pairs go to one thread, and the contacts are the same as from one. With `carryGeometry` (the
+/// soft step) a pair's geometry is carried with its bodies while they move within (9.12).
 void findIslandContacts(const CoupledIsland& island, std::span<BodySlot> slots,
-                        const StepContext& context, Real horizon,
+                        const StepContext& context, Real horizon, bool carryGeometry,
                         std::vector<IslandContact>& contacts);
 
 /// The island's contacts grouped by the body that keeps their warm start (IslandContact::owner),

@@ -170,7 +170,7 @@ void SoftStep::prepare(Real h)
     });
     // narrow phase once a step: every point the bodies can reach within it (12.1)
     const Real dt = h * std::max(1, m_settings.softSubsteps);
-    findIslandContacts(m_island, m_slots, m_context, dt, m_buffers.contacts);
+    findIslandContacts(m_island, m_slots, m_context, dt, true, m_buffers.contacts);
     m_buffers.manifolds.resize(m_buffers.contacts.size());
     parallelFor(m_buffers.contacts.size(), m_context.threads, [&](std::size_t k) {
         m_buffers.manifolds[k] = softManifoldOf(m_buffers.contacts[k], m_buffers.bodies,
