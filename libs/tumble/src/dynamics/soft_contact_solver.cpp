@@ -1,6 +1,7 @@
 // Soft contact rows (docs/physics/12-soft-step.md, (12.2)-(12.6)).
 #include "dynamics/soft_contact_solver.hpp"
 
+#include "dynamics/soft_lanes.hpp"
 #include "parallel_for.hpp"
 
 #include <algorithm>
@@ -13,16 +14,13 @@ namespace {
 
 /// Sweeps forth and back over a bouncing manifold's points (12.6).
 constexpr int kRestitutionSweeps = 4;
-/// A colour of fewer manifolds than this is swept by one thread: handing it out would cost more
-/// than sweeping it.
-constexpr std::size_t kThreadedColourManifolds = 256;
-
 /// Calls `visit(i)` for every manifold in colour order: each colour's manifolds move no dynamic
 /// body twice, so a large colour is split over `threads` and the result is the same for any
-/// count (11.5c); the overflow group goes in order on one thread.
-template <typename Visit>
+/// count (11.5c); the overflow group goes in order on one thread. With `lanes`, a colour is
+/// handed to `inLanes(c)` instead.
+template <typename Visit, typename InLanes>
 void forEachManifold(std::size_t count, const SoftColours& colours, int threads,
-                     const Visit& visit)
+                     const Visit& visit, const SoftLanes* lanes, const InLanes& inLanes)
 {
     if (colours.offsets.size() < 2) {
         for (std::size_t i = 0; i < count; ++i) {
@@ -35,6 +33,10 @@ void forEachManifold(std::size_t count, const SoftColours& colours, int threads,
         const std::size_t first = colours.offsets[c];
         const std::size_t size = colours.offsets[c + 1] - first;
         const bool overflow = c + 1 == groups;
+        if (lanes != nullptr && !overflow) {
+            inLanes(c);
+            continue;
+        }
         const int used = !overflow && size >= kThreadedColourManifolds ? threads : 1;
         parallelFor(size, used, [&](std::size_t i) { visit(first + i); });
     }
@@ -56,19 +58,22 @@ struct SoftPair {
     {
     }
 
-    /// Relative velocity of B's material point over A's at the offsets rA, rB (11.1).
-    [[nodiscard]] Vec3 relativeVelocity(const Vec3& rA, const Vec3& rB) const
+    /// The sliding velocity at the centre along t1 and t2: t_i . (vB - vA) + (c_B x t_i) . wB -
+    /// (c_A x t_i) . wA (11.1).
+    [[nodiscard]] Real slip(const Vec3& tangent, const Vec3& angularA, const Vec3& angularB) const
     {
-        return vB + glm::cross(wB, rB) - vA - glm::cross(wA, rA);
+        return glm::dot(tangent, vB - vA) + glm::dot(angularB, wB) - glm::dot(angularA, wA);
     }
 
-    /// The impulse P on B at rB, -P on A at rA.
-    void apply(const Vec3& rA, const Vec3& rB, const Vec3& impulse)
+    /// The friction impulse d1 t1 + d2 t2 at the centre, through its rows' images under the
+    /// inverse inertias.
+    void applyFriction(const SoftManifold& m, Real d1, Real d2)
     {
+        const Vec3 impulse = d1 * m.tangent1 + d2 * m.tangent2;
         vA -= a.invMass * impulse;
-        wA -= a.invInertia * glm::cross(rA, impulse);
+        wA -= d1 * m.responseA1 + d2 * m.responseA2;
         vB += b.invMass * impulse;
-        wB += b.invInertia * glm::cross(rB, impulse);
+        wB += d1 * m.responseB1 + d2 * m.responseB2;
     }
 
     /// The normal velocity at a point from its angular rows (12.4): n . (vB - vA) + (rB x n) . wB
@@ -88,11 +93,11 @@ struct SoftPair {
         wB += impulse * p.responseB;
     }
 
-    /// The angular impulse M on B, -M on A.
-    void applyAngular(const Vec3& moment)
+    /// The twist impulse tau n on B, -tau n on A.
+    void applyTwist(const SoftManifold& m, Real twist)
     {
-        wA -= a.invInertia * moment;
-        wB += b.invInertia * moment;
+        wA -= twist * m.twistResponseA;
+        wB += twist * m.twistResponseB;
     }
 
     /// Writes the velocities back; the static body (no inverse mass) never changes, and
@@ -171,12 +176,11 @@ void solveFriction(SoftPair& pair, SoftManifold& m)
         std::clamp(m.twistImpulse - m.twistMass * spin, -twistLimit, twistLimit);
     const Real twistApplied = twist - m.twistImpulse;
     m.twistImpulse = twist;
-    pair.applyAngular(twistApplied * m.normal);
+    pair.applyTwist(m, twistApplied);
     m.frictionWork += twistApplied * (spin + 0.5 * m.twistK * twistApplied);
 
-    const Vec3 velocity = pair.relativeVelocity(m.centreA, m.centreB);
-    const Real slip1 = glm::dot(m.tangent1, velocity);
-    const Real slip2 = glm::dot(m.tangent2, velocity);
+    const Real slip1 = pair.slip(m.tangent1, m.angularA1, m.angularB1);
+    const Real slip2 = pair.slip(m.tangent2, m.angularA2, m.angularB2);
     const auto& mt = m.tangentMass;
     Real next1 = m.frictionImpulse1 - (mt[0] * slip1 + mt[1] * slip2);
     Real next2 = m.frictionImpulse2 - (mt[1] * slip1 + mt[2] * slip2);
@@ -191,7 +195,7 @@ void solveFriction(SoftPair& pair, SoftManifold& m)
     const Real d2 = next2 - m.frictionImpulse2;
     m.frictionImpulse1 = next1;
     m.frictionImpulse2 = next2;
-    pair.apply(m.centreA, m.centreB, d1 * m.tangent1 + d2 * m.tangent2);
+    pair.applyFriction(m, d1, d2);
     const auto& kt = m.tangentK;
     const Real change1 = kt[0] * d1 + kt[1] * d2;
     const Real change2 = kt[1] * d1 + kt[2] * d2;
@@ -236,28 +240,37 @@ void prepareSoftRows(SoftManifold& m, std::span<const SoftBody> bodies)
         const Vec3 fromCentre = m.points[k].anchorB - m.centreB;
         m.points[k].leverArm = glm::length(fromCentre - glm::dot(fromCentre, m.normal) * m.normal);
     }
-    // (11.3) at the centre: K_ij = (mA + mB) t_i . t_j + (rA x t_i) . IA^-1 (rA x t_j) + ...
-    const auto entry = [&](const Vec3& ti, const Vec3& tj) {
-        return (a.invMass + b.invMass) * glm::dot(ti, tj) +
-               glm::dot(glm::cross(m.centreA, ti), a.invInertia * glm::cross(m.centreA, tj)) +
-               glm::dot(glm::cross(m.centreB, ti), b.invInertia * glm::cross(m.centreB, tj));
-    };
-    const Real k11 = entry(m.tangent1, m.tangent1);
-    const Real k12 = entry(m.tangent1, m.tangent2);
-    const Real k22 = entry(m.tangent2, m.tangent2);
+    m.angularA1 = glm::cross(m.centreA, m.tangent1);
+    m.angularA2 = glm::cross(m.centreA, m.tangent2);
+    m.angularB1 = glm::cross(m.centreB, m.tangent1);
+    m.angularB2 = glm::cross(m.centreB, m.tangent2);
+    m.responseA1 = a.invInertia * m.angularA1;
+    m.responseA2 = a.invInertia * m.angularA2;
+    m.responseB1 = b.invInertia * m.angularB1;
+    m.responseB2 = b.invInertia * m.angularB2;
+    m.twistResponseA = a.invInertia * m.normal;
+    m.twistResponseB = b.invInertia * m.normal;
+    // (11.3) at the centre: K_ij = (mA + mB) t_i . t_j + (cA x t_i) . IA^-1 (cA x t_j) + ...
+    const Real massSum = a.invMass + b.invMass;
+    const Real k11 = massSum + glm::dot(m.angularA1, m.responseA1) +
+                     glm::dot(m.angularB1, m.responseB1);
+    const Real k12 = glm::dot(m.angularA1, m.responseA2) + glm::dot(m.angularB1, m.responseB2);
+    const Real k22 = massSum + glm::dot(m.angularA2, m.responseA2) +
+                     glm::dot(m.angularB2, m.responseB2);
     m.tangentK = {k11, k12, k22};
     const Real determinant = k11 * k22 - k12 * k12;
     m.tangentMass = determinant > 0.0 ? std::array<Real, 3>{k22 / determinant,
                                                             -k12 / determinant,
                                                             k11 / determinant}
                                       : std::array<Real, 3>{};
-    m.twistK = glm::dot(m.normal, (a.invInertia + b.invInertia) * m.normal);
+    m.twistK = glm::dot(m.normal, m.twistResponseA) + glm::dot(m.normal, m.twistResponseB);
     m.twistMass = m.twistK > 0.0 ? 1.0 / m.twistK : 0.0;
 }
 
 void warmStartSoft(std::span<const SoftManifold> manifolds, std::span<SoftBody> bodies,
-                   const SoftColours& colours, int threads)
+                   const SoftColours& colours, int threads, SoftLanes* lanes)
 {
+    const auto inLanes = [&](std::size_t c) { lanes->warmStart(c, bodies, threads); };
     forEachManifold(manifolds.size(), colours, threads, [&](std::size_t index) {
         const SoftManifold& m = manifolds[index];
         SoftPair pair(bodies[m.bodyA], bodies[m.bodyB]);
@@ -265,17 +278,19 @@ void warmStartSoft(std::span<const SoftManifold> manifolds, std::span<SoftBody> 
             const SoftPoint& p = m.points[k];
             pair.applyNormal(m.normal, p, p.normalImpulse);
         }
-        pair.applyAngular(m.twistImpulse * m.normal);
-        pair.apply(m.centreA, m.centreB,
-                   m.frictionImpulse1 * m.tangent1 + m.frictionImpulse2 * m.tangent2);
+        pair.applyTwist(m, m.twistImpulse);
+        pair.applyFriction(m, m.frictionImpulse1, m.frictionImpulse2);
         pair.store();
-    });
+    }, lanes, inLanes);
 }
 
 void solveSoft(std::span<SoftManifold> manifolds, std::span<SoftBody> bodies,
                const SoftSolveSettings& settings, bool useBias, const SoftColours& colours,
-               int threads)
+               int threads, SoftLanes* lanes)
 {
+    const auto inLanes = [&](std::size_t c) {
+        lanes->solve(c, bodies, settings, useBias, threads);
+    };
     forEachManifold(manifolds.size(), colours, threads, [&](std::size_t index) {
         SoftManifold& m = manifolds[index];
         SoftPair pair(bodies[m.bodyA], bodies[m.bodyB]);
@@ -293,7 +308,7 @@ void solveSoft(std::span<SoftManifold> manifolds, std::span<SoftBody> bodies,
             solveFriction(pair, m);
         }
         pair.store();
-    });
+    }, lanes, inLanes);
 }
 
 void restituteSoft(std::span<SoftManifold> manifolds, std::span<SoftBody> bodies, Real threshold,
@@ -329,7 +344,7 @@ void restituteSoft(std::span<SoftManifold> manifolds, std::span<SoftBody> bodies
             }
         }
         pair.store();
-    });
+    }, nullptr, [](std::size_t) {});
 }
 
 } // namespace tumble

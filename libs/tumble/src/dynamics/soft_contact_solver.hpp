@@ -79,6 +79,18 @@ struct SoftManifold {
     /// The points' centre as offsets from each centre of mass, m.
     Vec3 centreA{0.0};
     Vec3 centreB{0.0};
+    /// The friction rows' angular parts at the centre, c_A x t_i and c_B x t_i, their images
+    /// under the inverse inertias, and the twist row's I_A^-1 n and I_B^-1 n (11.2).
+    Vec3 angularA1{0.0};
+    Vec3 angularA2{0.0};
+    Vec3 angularB1{0.0};
+    Vec3 angularB2{0.0};
+    Vec3 responseA1{0.0};
+    Vec3 responseA2{0.0};
+    Vec3 responseB1{0.0};
+    Vec3 responseB2{0.0};
+    Vec3 twistResponseA{0.0};
+    Vec3 twistResponseB{0.0};
     /// K_t at the centre over (t1, t2) and its inverse, as (11, 12, 22) (11.3).
     std::array<Real, 3> tangentK{};
     std::array<Real, 3> tangentMass{};
@@ -107,6 +119,10 @@ struct SoftSolveSettings {
     Real pushSpeed = 0.0;
 };
 
+/// A colour of fewer manifolds than this is swept by one thread: handing it out would cost more
+/// than sweeping it.
+inline constexpr std::size_t kThreadedColourManifolds = 256;
+
 /// The manifolds' order for the passes: colour c is manifolds [offsets[c], offsets[c + 1]) and
 /// no two of them move the same dynamic body; the last group is the overflow, swept in order.
 /// With no offsets every pass goes in order.
@@ -114,16 +130,21 @@ struct SoftColours {
     std::vector<std::uint32_t> offsets;
 };
 
-/// Applies each manifold's accumulated impulses to its bodies (12.5).
+class SoftLanes;
+
+/// Applies each manifold's accumulated impulses to its bodies (12.5). With `lanes` (packed from
+/// these manifolds and colours) the colours are read from and written to the lanes, the
+/// overflow group from and to `manifolds`.
 void warmStartSoft(std::span<const SoftManifold> manifolds, std::span<SoftBody> bodies,
-                   const SoftColours& colours, int threads);
+                   const SoftColours& colours, int threads, SoftLanes* lanes = nullptr);
 
 /// One Gauss-Seidel pass over the manifolds in `colours` order: each point's normal row, soft and biased
 /// towards closing its gap when `useBias` (12.4); rigid and unbiased when not (the relax pass),
 /// followed by the manifold's twist row and its friction disc of radius mu sum lambda_n (12.5).
+/// `lanes` as for warmStartSoft: the same bits, four manifolds of a colour at a time.
 void solveSoft(std::span<SoftManifold> manifolds, std::span<SoftBody> bodies,
                const SoftSolveSettings& settings, bool useBias, const SoftColours& colours,
-               int threads);
+               int threads, SoftLanes* lanes = nullptr);
 
 /// (12.6): each point that pushed and began the step approaching faster than `threshold` gets
 /// the normal impulse that makes it leave at e times its approach speed, never pulling.

@@ -7,6 +7,7 @@
 #include "dynamics/constraint_colouring.hpp"
 #include "dynamics/energy_booking.hpp"
 #include "dynamics/soft_contact_solver.hpp"
+#include "dynamics/soft_lanes.hpp"
 #include "dynamics/solver_point.hpp"
 #include "step/island_contacts.hpp"
 #include "step/soft_warm_start.hpp"
@@ -25,8 +26,10 @@ struct SoftBuffers {
     std::vector<Vec3> centres;
     std::vector<SoftManifold> manifolds;
     SoftColours colours;
+    SoftLanes lanes;
+    /// Whether this step's colours are packed in `lanes`.
+    bool inLanes = false;
     std::vector<IslandContact> spareContacts;
-    std::vector<SoftManifold> spareManifolds;
     std::vector<ProxyPair> ends;
     std::vector<std::uint8_t> isStatic;
     std::vector<SoftBody> bodies;
@@ -42,6 +45,10 @@ SoftBuffers& threadBuffers()
     thread_local SoftBuffers buffers;
     return buffers;
 }
+
+/// An island of fewer manifolds sweeps them one at a time: most lanes of its colours' blocks
+/// would be empty.
+constexpr std::size_t kLaneManifolds = 32;
 
 SoftBody softBodyOf(const Body& body)
 {
@@ -137,6 +144,9 @@ void SoftStep::run(Real dt)
     for (int s = 0; s < substeps; ++s) {
         substep(h, solve);
     }
+    if (m_buffers.inLanes) {
+        m_buffers.lanes.unpack(m_buffers.manifolds, m_context.threads);
+    }
     saveKinetic();
     restituteSoft(m_buffers.manifolds, m_buffers.bodies, m_settings.restitutionThreshold,
                   m_buffers.colours, m_context.threads);
@@ -171,6 +181,7 @@ void SoftStep::prepare(Real h)
     // narrow phase once a step: every point the bodies can reach within it (12.1)
     const Real dt = h * std::max(1, m_settings.softSubsteps);
     findIslandContacts(m_island, m_slots, m_context, dt, true, m_buffers.contacts);
+    orderByColour();
     m_buffers.manifolds.resize(m_buffers.contacts.size());
     parallelFor(m_buffers.contacts.size(), m_context.threads, [&](std::size_t k) {
         m_buffers.manifolds[k] = softManifoldOf(m_buffers.contacts[k], m_buffers.bodies,
@@ -181,34 +192,36 @@ void SoftStep::prepare(Real h)
         points += static_cast<std::size_t>(contact.manifold.pointCount);
     }
     m_events.statistics.contactPoints += points;
-    orderByColour();
     // (12.5): last step's impulses, matched by the other side and the points' feature keys
     loadSoftWarmStart(m_island, m_slots, m_buffers.contacts, m_buffers.manifolds,
                       m_settings.contactTolerance, m_context.threads);
+    // (12.9): a large island's colours four manifolds at a time, the same bits
+    m_buffers.inLanes = m_buffers.manifolds.size() >= kLaneManifolds;
+    if (m_buffers.inLanes) {
+        m_buffers.lanes.pack(m_buffers.manifolds, m_buffers.colours, m_buffers.bodies,
+                             m_context.threads);
+    }
 }
 
 void SoftStep::orderByColour()
 {
-    // (10.5): the manifolds colour by colour, whatever the threads, so every pass sweeps them in
-    // the same order and a large colour can be split over the threads (11.5c)
+    // (10.5): the contacts colour by colour, whatever the threads, so every pass sweeps their
+    // manifolds in the same order and a large colour can be split over the threads (11.5c)
     const std::size_t count = m_island.bodies.size();
-    std::vector<SoftManifold>& manifolds = m_buffers.manifolds;
-    m_buffers.ends.resize(manifolds.size());
-    for (std::size_t k = 0; k < manifolds.size(); ++k) {
-        m_buffers.ends[k] = ProxyPair{manifolds[k].bodyA, manifolds[k].bodyB};
+    const std::vector<IslandContact>& contacts = m_buffers.contacts;
+    m_buffers.ends.resize(contacts.size());
+    for (std::size_t k = 0; k < contacts.size(); ++k) {
+        m_buffers.ends[k] = ProxyPair{contacts[k].solverA, contacts[k].solverB};
     }
     m_buffers.isStatic.assign(count + 1, 0);
     m_buffers.isStatic[count] = 1;
     const ConstraintColours colours =
         colourConstraints(m_buffers.ends, m_buffers.isStatic, kMaxConstraintColours);
-    m_buffers.spareContacts.resize(manifolds.size());
-    m_buffers.spareManifolds.resize(manifolds.size());
-    parallelFor(manifolds.size(), m_context.threads, [&](std::size_t k) {
-        m_buffers.spareContacts[k] = m_buffers.contacts[colours.constraints[k]];
-        m_buffers.spareManifolds[k] = manifolds[colours.constraints[k]];
+    m_buffers.spareContacts.resize(contacts.size());
+    parallelFor(contacts.size(), m_context.threads, [&](std::size_t k) {
+        m_buffers.spareContacts[k] = contacts[colours.constraints[k]];
     });
     std::swap(m_buffers.contacts, m_buffers.spareContacts);
-    std::swap(m_buffers.manifolds, m_buffers.spareManifolds);
     m_buffers.colours.offsets = colours.offsets;
 }
 
@@ -221,8 +234,9 @@ void SoftStep::substep(Real h, const SoftSolveSettings& solve)
     saveKinetic();
     const SoftColours& colours = m_buffers.colours;
     const int threads = m_context.threads;
-    warmStartSoft(m_buffers.manifolds, bodies, colours, threads);
-    solveSoft(m_buffers.manifolds, bodies, solve, true, colours, threads);
+    SoftLanes* lanes = m_buffers.inLanes ? &m_buffers.lanes : nullptr;
+    warmStartSoft(m_buffers.manifolds, bodies, colours, threads, lanes);
+    solveSoft(m_buffers.manifolds, bodies, solve, true, colours, threads, lanes);
     // (12.4): positions from the solved velocities, the orientation to first order, normalised
     parallelFor(count, m_context.threads, [&](std::size_t i) {
         SoftBody& b = bodies[i];
@@ -231,7 +245,7 @@ void SoftStep::substep(Real h, const SoftSolveSettings& solve)
         b.orientation = glm::normalize(b.orientation + (0.5 * h) * (spin * b.orientation));
         b.deltaRotation = glm::mat3_cast(b.orientation) * glm::transpose(body(i).rotation());
     });
-    solveSoft(m_buffers.manifolds, bodies, solve, false, colours, threads);
+    solveSoft(m_buffers.manifolds, bodies, solve, false, colours, threads, lanes);
     addBodyWork();
 }
 

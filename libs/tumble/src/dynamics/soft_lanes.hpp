@@ -1,0 +1,46 @@
+// The soft step's passes over four manifolds at once: the manifolds of one colour share no
+// dynamic body, so four of them are solved side by side in the lanes of one vector, each lane
+// doing exactly the arithmetic of the one-manifold pass (docs/physics/12-soft-step.md, (12.9)).
+#pragma once
+
+#include "dynamics/soft_contact_solver.hpp"
+
+#include <cstddef>
+#include <memory>
+#include <span>
+
+namespace tumble {
+
+/// The colours of a soft island (not the overflow group) packed four manifolds to a block, each
+/// block lane by lane in memory (structure of arrays).
+class SoftLanes {
+public:
+    SoftLanes();
+    ~SoftLanes();
+    SoftLanes(const SoftLanes&) = delete;
+    SoftLanes& operator=(const SoftLanes&) = delete;
+
+    /// Copies the manifolds of every colour but the overflow, their rows and impulses, with the
+    /// inverse masses of `bodies` (whose last entry is the static body), the blocks spread over
+    /// `threads`.
+    void pack(std::span<const SoftManifold> manifolds, const SoftColours& colours,
+              std::span<const SoftBody> bodies, int threads);
+
+    /// warmStartSoft over colour `colour`'s manifolds, on `threads` if the colour is large.
+    void warmStart(std::size_t colour, std::span<SoftBody> bodies, int threads) const;
+
+    /// solveSoft over colour `colour`'s manifolds, bit for bit: each lane rounds as the
+    /// one-manifold pass does (no fused operations), and a colour's manifolds move disjoint
+    /// bodies.
+    void solve(std::size_t colour, std::span<SoftBody> bodies, const SoftSolveSettings& settings,
+               bool useBias, int threads);
+
+    /// Writes the impulses and work back to the manifolds packed, the blocks over `threads`.
+    void unpack(std::span<SoftManifold> manifolds, int threads) const;
+
+private:
+    struct Storage;
+    std::unique_ptr<Storage> m_storage;
+};
+
+} // namespace tumble
