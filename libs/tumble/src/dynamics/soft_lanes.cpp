@@ -331,15 +331,19 @@ void warmStartBlocks(std::span<const LaneBlock> blocks, std::span<SoftBody> bodi
 }
 
 /// Blocks handed to a thread at a time in a large colour.
-constexpr std::size_t kBlocksPerShare = 16;
+constexpr std::size_t kBlocksPerShare = 8;
+/// A colour of fewer manifolds than this is swept by one thread. In lanes a manifold costs a
+/// quarter of what it costs alone, yet a colour of 64 still takes several times what handing
+/// out its two shares does.
+constexpr std::size_t kThreadedLaneManifolds = 64;
 
 /// Calls `visit(first, last)` over a colour's blocks [begin, end): in shares over `threads` for a
-/// colour of kThreadedColourManifolds or more, else at once.
+/// colour of kThreadedLaneManifolds or more, else at once.
 template <typename Visit>
 void forEachShare(std::size_t begin, std::size_t end, std::size_t manifolds, int threads,
                   const Visit& visit)
 {
-    if (manifolds < kThreadedColourManifolds || threads < 2) {
+    if (manifolds < kThreadedLaneManifolds || threads < 2) {
         visit(begin, end);
         return;
     }
@@ -357,6 +361,8 @@ struct SoftLanes::Storage {
     /// Colour c's blocks are [colourBlocks[c], colourBlocks[c + 1]); its manifold count.
     std::vector<std::size_t> colourBlocks;
     std::vector<std::size_t> colourManifolds;
+    std::vector<std::uint32_t> firstManifold;
+    std::vector<std::uint32_t> laneCount;
 };
 
 SoftLanes::SoftLanes() : m_storage(std::make_unique<Storage>()) {}
@@ -380,22 +386,29 @@ void SoftLanes::pack(std::span<const SoftManifold> manifolds, const SoftColours&
     }
     const auto staticIndex = static_cast<std::uint32_t>(bodies.size() - 1);
     storage.blocks.resize(blockCount);
-    // each block writes only itself
-    parallelFor(groups > 1 ? groups - 1 : 0, threads, [&](std::size_t c) {
-        const std::size_t first = colours.offsets[c];
-        const std::size_t size = colours.offsets[c + 1] - first;
-        for (std::size_t b = 0; b * kLanes < size; ++b) {
-            LaneBlock& block = storage.blocks[storage.colourBlocks[c] + b];
-            block = emptyBlock(staticIndex);
-            block.lanes = static_cast<std::uint32_t>(std::min<std::size_t>(kLanes, size - b * kLanes));
-            for (std::uint32_t lane = 0; lane < block.lanes; ++lane) {
-                const auto index = static_cast<std::uint32_t>(first + b * kLanes + lane);
-                const SoftManifold& m = manifolds[index];
-                block.manifold[lane] = index;
-                block.bodyA[lane] = m.bodyA;
-                block.bodyB[lane] = m.bodyB;
-                packLane(block, static_cast<int>(lane), m, bodies);
-            }
+    // the first manifold and the lanes of each block, so that the blocks (not the colours, of
+    // very unequal sizes) are shared out over the threads, each writing only itself
+    storage.firstManifold.resize(blockCount);
+    storage.laneCount.resize(blockCount);
+    std::size_t b = 0;
+    for (std::size_t c = 0; c + 1 < groups; ++c) {
+        const std::size_t end = colours.offsets[c + 1];
+        for (std::size_t first = colours.offsets[c]; first < end; first += kLanes, ++b) {
+            storage.firstManifold[b] = static_cast<std::uint32_t>(first);
+            storage.laneCount[b] =
+                static_cast<std::uint32_t>(std::min<std::size_t>(kLanes, end - first));
+        }
+    }
+    parallelFor(blockCount, threads, [&](std::size_t index) {
+        LaneBlock& block = storage.blocks[index];
+        block = emptyBlock(staticIndex);
+        block.lanes = storage.laneCount[index];
+        for (std::uint32_t lane = 0; lane < block.lanes; ++lane) {
+            const std::uint32_t m = storage.firstManifold[index] + lane;
+            block.manifold[lane] = m;
+            block.bodyA[lane] = manifolds[m].bodyA;
+            block.bodyB[lane] = manifolds[m].bodyB;
+            packLane(block, static_cast<int>(lane), manifolds[m], bodies);
         }
     });
 }
