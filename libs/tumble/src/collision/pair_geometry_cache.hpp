@@ -42,17 +42,20 @@ public:
     [[nodiscard]] std::size_t size() const { return m_entries.size(); }
 
 private:
+    /// The fields every request reads come first, the carried geometry (read in most requests
+    /// of a soft world) right after them: a request then touches few cache lines.
     struct Entry {
         bool asked = false;
         Transform poseA{};
         Transform poseB{};
-        Vec3 halfExtentsA{0.0};
-        Vec3 halfExtentsB{0.0};
-        CuboidPairGeometry geometry{};
-        /// The last geometry carried from `geometry` (9.12), and the poses it was carried to.
-        CuboidPairGeometry carried{};
+        /// The poses the last carried geometry was carried to (9.12).
         Transform carriedA{};
         Transform carriedB{};
+        Vec3 halfExtentsA{0.0};
+        Vec3 halfExtentsB{0.0};
+        /// The last geometry carried from `geometry`.
+        CuboidPairGeometry carried{};
+        CuboidPairGeometry geometry{};
     };
     /// The other side of each entry, apart from the entries so that finding one reads little.
     std::vector<std::uint32_t> m_others;
