@@ -3,6 +3,7 @@
 #include "dynamics/constraint_colouring.hpp"
 #include "dynamics/soft_contact_solver.hpp"
 #include "dynamics/soft_lanes.hpp"
+#include "support/random_bodies.hpp"
 
 #include <gtest/gtest.h>
 
@@ -34,12 +35,8 @@ struct RandomSoftIsland {
             body.angularVelocity = vector();
             body.deltaPosition = 1e-3 * vector();
             body.deltaRotation = glm::mat3_cast(glm::normalize(Quat(1.0, 1e-3 * vector())));
-            body.invMass = 1.0 / (1.0 + 9.0 * (0.5 + 0.5 * unit(random)));
-            const Vec3 inertia = 0.5 + 0.5 * glm::abs(vector());
-            const Mat3 rotation = glm::mat3_cast(glm::normalize(Quat(unit(random), vector())));
-            body.invInertia = rotation * Mat3(1.0 / inertia.x, 0.0, 0.0, 0.0, 1.0 / inertia.y,
-                                              0.0, 0.0, 0.0, 1.0 / inertia.z) *
-                              glm::transpose(rotation);
+            body.invMass = testing::randomInverseMass(random);
+            body.invInertia = testing::randomInverseInertia(random);
         }
         bodies.emplace_back(); // the static geometry
         std::uniform_int_distribution<std::uint32_t> pick(0, bodyCount - 1);

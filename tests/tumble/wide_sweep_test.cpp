@@ -2,6 +2,7 @@
 // same runs one after the other (docs/physics/11-island-solver.md, (11.5d)).
 #include "dynamics/island_solver.hpp"
 #include "dynamics/wide_sweep.hpp"
+#include "support/random_bodies.hpp"
 
 #include <gtest/gtest.h>
 
@@ -31,13 +32,8 @@ struct RandomIsland {
             SolverBody& body = bodies.emplace_back();
             body.linearVelocity = vector();
             body.angularVelocity = vector();
-            body.invMass = 1.0 / (1.0 + 9.0 * (0.5 + 0.5 * unit(random)));
-            const Vec3 inertia = 0.5 + 0.5 * glm::abs(vector());
-            const Quat turn = glm::normalize(Quat(unit(random), vector()));
-            const Mat3 rotation = glm::mat3_cast(turn);
-            body.invInertiaWorld = rotation * Mat3(1.0 / inertia.x, 0.0, 0.0, 0.0, 1.0 / inertia.y,
-                                                   0.0, 0.0, 0.0, 1.0 / inertia.z) *
-                                   glm::transpose(rotation);
+            body.invMass = testing::randomInverseMass(random);
+            body.invInertiaWorld = testing::randomInverseInertia(random);
         }
         bodies.emplace_back(); // the static geometry
         const auto staticBody = bodyCount;
