@@ -151,6 +151,7 @@ struct SoftLanes::Storage {
     /// Colour c's blocks are [colourBlocks[c], colourBlocks[c + 1]); its manifold count.
     std::vector<std::size_t> colourBlocks;
     std::vector<std::size_t> colourManifolds;
+    /// Each block's first manifold and the lanes it fills.
     std::vector<std::uint32_t> firstManifold;
     std::vector<std::uint32_t> laneCount;
 };
