@@ -27,8 +27,8 @@ struct RandomSoftIsland {
     RandomSoftIsland(std::uint32_t seed, std::uint32_t bodyCount, int count)
     {
         std::mt19937_64 random(seed);
-        std::uniform_real_distribution<Real> unit(-1.0, 1.0);
-        const auto vector = [&] { return Vec3(unit(random), unit(random), unit(random)); };
+        const auto unit = [&] { return testing::randomUnit(random); };
+        const auto vector = [&] { return testing::randomVector(random); };
         for (std::uint32_t i = 0; i < bodyCount; ++i) {
             SoftBody& body = bodies.emplace_back();
             body.linearVelocity = vector();
@@ -51,19 +51,19 @@ struct RandomSoftIsland {
             m.againstStatic = m.bodyA == bodyCount;
             m.normal = glm::normalize(vector() + Vec3(0.0, 0.1, 0.0));
             orthonormalBasis(m.normal, m.tangent1, m.tangent2);
-            m.friction = random() % 4 == 0 ? 0.0 : 0.05 + 0.5 * (0.5 + 0.5 * unit(random));
+            m.friction = random() % 4 == 0 ? 0.0 : 0.05 + 0.5 * (0.5 + 0.5 * unit());
             m.pointCount = 1 + static_cast<int>(random() % 4);
             for (int k = 0; k < m.pointCount; ++k) {
                 SoftPoint& p = m.points[k];
                 p.anchorA = m.againstStatic ? Vec3(0.0) : vector();
                 p.anchorB = vector();
-                p.baseSeparation = 0.02 * unit(random);
-                p.normalImpulse = 0.5 + 0.5 * unit(random);
+                p.baseSeparation = 0.02 * unit();
+                p.normalImpulse = 0.5 + 0.5 * unit();
             }
             prepareSoftRows(m, bodies);
-            m.frictionImpulse1 = 0.1 * unit(random);
-            m.frictionImpulse2 = 0.1 * unit(random);
-            m.twistImpulse = 0.05 * unit(random);
+            m.frictionImpulse1 = 0.1 * unit();
+            m.frictionImpulse2 = 0.1 * unit();
+            m.twistImpulse = 0.05 * unit();
         }
         std::vector<ProxyPair> ends;
         for (const SoftManifold& m : drawn) {

@@ -26,8 +26,8 @@ struct RandomIsland {
     RandomIsland(std::uint32_t seed, std::uint32_t bodyCount, int manifolds)
     {
         std::mt19937_64 random(seed);
-        std::uniform_real_distribution<Real> unit(-1.0, 1.0);
-        const auto vector = [&] { return Vec3(unit(random), unit(random), unit(random)); };
+        const auto unit = [&] { return testing::randomUnit(random); };
+        const auto vector = [&] { return testing::randomVector(random); };
         for (std::uint32_t i = 0; i < bodyCount; ++i) {
             SolverBody& body = bodies.emplace_back();
             body.linearVelocity = vector();
@@ -46,7 +46,7 @@ struct RandomIsland {
                 a = staticBody;
             }
             const Vec3 normal = glm::normalize(vector() + Vec3(0.0, 0.1, 0.0));
-            const Real friction = random() % 4 == 0 ? 0.0 : 0.05 + 0.3 * (0.5 + 0.5 * unit(random));
+            const Real friction = random() % 4 == 0 ? 0.0 : 0.05 + 0.3 * (0.5 + 0.5 * unit());
             const int points = pointCount(random);
             for (int k = 0; k < points; ++k) {
                 ContactConstraint& c = constraints.emplace_back();
@@ -55,13 +55,13 @@ struct RandomIsland {
                 c.normal = normal;
                 c.offsetA = vector();
                 c.offsetB = vector();
-                c.separation = random() % 3 == 0 ? 0.01 * (0.5 + 0.5 * unit(random)) : 0.0;
+                c.separation = random() % 3 == 0 ? 0.01 * (0.5 + 0.5 * unit()) : 0.0;
                 c.kineticFriction = friction;
                 c.staticFriction = friction;
                 prepareConstraint(c, bodies, {ConstraintTarget::Substep, 1.0 / 60, 1e-4, 0.05});
-                c.normalImpulse = 0.5 + 0.5 * unit(random);
-                c.tangentImpulse1 = 0.1 * unit(random);
-                c.tangentImpulse2 = 0.1 * unit(random);
+                c.normalImpulse = 0.5 + 0.5 * unit();
+                c.tangentImpulse1 = 0.1 * unit();
+                c.tangentImpulse2 = 0.1 * unit();
             }
         }
     }

@@ -85,11 +85,18 @@ TUMBLE_WIDE_INLINE Wide dot(const Wide3& a, const Wide3& b)
     return a.x * b.x + a.y * b.y + a.z * b.z;
 }
 
-/// a - s d (or a + s d with `add`) where `where`, else a: one body's part of applyAlong.
+/// a -= s d (or a += s d with `add`), lane by lane.
+TUMBLE_WIDE_INLINE void addScaled(Wide3& a, Wide s, const Wide3& d, bool add)
+{
+    a = add ? Wide3{a.x + s * d.x, a.y + s * d.y, a.z + s * d.z}
+            : Wide3{a.x - s * d.x, a.y - s * d.y, a.z - s * d.z};
+}
+
+/// addScaled where `where`, else a: one body's part of applyAlong.
 TUMBLE_WIDE_INLINE void pushAlong(Wide3& a, Wide s, const Wide3& d, Mask where, bool add)
 {
-    const Wide3 moved = add ? Wide3{a.x + s * d.x, a.y + s * d.y, a.z + s * d.z}
-                            : Wide3{a.x - s * d.x, a.y - s * d.y, a.z - s * d.z};
+    Wide3 moved = a;
+    addScaled(moved, s, d, add);
     a = {select(where, moved.x, a.x), select(where, moved.y, a.y), select(where, moved.z, a.z)};
 }
 

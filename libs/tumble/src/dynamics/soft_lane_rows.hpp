@@ -81,13 +81,6 @@ TUMBLE_WIDE_INLINE Wide3 minus(const Wide3& a, const Wide3& b)
     return {a.x - b.x, a.y - b.y, a.z - b.z};
 }
 
-/// a -= s d (or a += s d with `add`): SoftPair's updates, lane by lane.
-TUMBLE_WIDE_INLINE void addScaled(Wide3& a, Wide s, const Wide3& d, bool add)
-{
-    a = add ? Wide3{a.x + s * d.x, a.y + s * d.y, a.z + s * d.z}
-            : Wide3{a.x - s * d.x, a.y - s * d.y, a.z - s * d.z};
-}
-
 /// SoftPair::applyNormal where `active`.
 TUMBLE_WIDE_INLINE void applyNormal(const LaneBlock& block, const LanePoint& p, Wide impulse,
                                     Mask active, LaneVelocities& v)
