@@ -303,10 +303,9 @@ void solveSoft(std::span<SoftManifold> manifolds, std::span<SoftBody> bodies,
         for (int k = m.pointCount - 1; k >= 0; --k) {
             solveNormal(pair, m, m.points[k], motion, settings, useBias);
         }
-        // friction acts in the relax pass only, whose velocities the step keeps (12.5)
-        if (!useBias) {
-            solveFriction(pair, m);
-        }
+        // (12.5): friction in both passes, so that the positions the biased pass moves to
+        // are not reached sliding
+        solveFriction(pair, m);
         pair.store();
     }, lanes, inLanes);
 }

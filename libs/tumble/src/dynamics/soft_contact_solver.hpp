@@ -139,8 +139,9 @@ void warmStartSoft(std::span<const SoftManifold> manifolds, std::span<SoftBody> 
                    const SoftColours& colours, int threads, SoftLanes* lanes = nullptr);
 
 /// One Gauss-Seidel pass over the manifolds in `colours` order: each point's normal row, soft and biased
-/// towards closing its gap when `useBias` (12.4); rigid and unbiased when not (the relax pass),
-/// followed by the manifold's twist row and its friction disc of radius mu sum lambda_n (12.5).
+/// towards closing its gap when `useBias` (12.4), rigid and unbiased when not (the relax pass);
+/// in either pass then the manifold's twist row and its friction disc of radius mu sum lambda_n
+/// (12.5).
 /// `lanes` as for warmStartSoft: the same bits, four manifolds of a colour at a time.
 void solveSoft(std::span<SoftManifold> manifolds, std::span<SoftBody> bodies,
                const SoftSolveSettings& settings, bool useBias, const SoftColours& colours,

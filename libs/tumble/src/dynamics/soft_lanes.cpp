@@ -98,9 +98,7 @@ void solveBlocks(std::span<LaneBlock> blocks, std::span<SoftBody> bodies, const 
         for (int k = 3; k >= 0; --k) {
             solveNormal(block, block.points[k], motion, s, v);
         }
-        if (!s.useBias) {
-            solveFriction(block, v);
-        }
+        solveFriction(block, v);
         scatter(block, v, bodies);
     }
 }
