@@ -2,7 +2,6 @@
 #include "step/soft_warm_start.hpp"
 
 #include "parallel_for.hpp"
-#include "step/owner_groups.hpp"
 
 #include <algorithm>
 
@@ -92,14 +91,18 @@ void storeSoftWarmStart(const CoupledIsland& island, std::span<BodySlot> slots,
                         std::span<const IslandContact> contacts,
                         std::span<const SoftManifold> manifolds, int threads)
 {
-    // each owner's cache is written by its own contacts only, in their order
-    const OwnerGroups& groups = contactsByOwner(contacts, island.bodies.size());
     for (const std::uint32_t slot : island.bodies) {
         slots[slot].softContacts.clear();
     }
-    parallelFor(groups.count(), threads, [&](std::size_t g) {
-        for (const std::uint32_t index : groups.group(g)) {
+    // each owner's cache is written by one share, from its contacts in their order; every share
+    // reads the contacts in order, so the large manifolds stream from memory
+    const auto shares = static_cast<std::size_t>(std::max(1, threads));
+    parallelFor(shares, threads, [&](std::size_t share) {
+        for (std::size_t index = 0; index < contacts.size(); ++index) {
             const IslandContact& contact = contacts[index];
+            if (contact.owner % shares != share) {
+                continue;
+            }
             const SoftManifold& m = manifolds[index];
             BodySlot& slot = slots[island.bodies[contact.owner]];
             CachedSoftContact kept;
