@@ -59,7 +59,9 @@ struct RandomSoftIsland {
                 p.anchorB = vector();
                 p.baseSeparation = 0.02 * unit();
                 p.normalImpulse = 0.5 + 0.5 * unit();
+                p.relativeVelocity = unit();
             }
+            m.restitution = random() % 2 == 0 ? 0.0 : 0.5;
             prepareSoftRows(m, bodies);
             m.frictionImpulse1 = 0.1 * unit();
             m.frictionImpulse2 = 0.1 * unit();
@@ -80,8 +82,10 @@ struct RandomSoftIsland {
     }
 };
 
-/// Two sub-steps of passes as the soft step makes them: warm start, biased pass, relax pass.
-void runPasses(RandomSoftIsland& island, int threads, SoftLanes* lanes)
+/// Two sub-steps of passes as the soft step makes them (warm start, biased pass, relax pass),
+/// then restitution; what the step leaves of each manifold.
+std::vector<SoftContactResult> runPasses(RandomSoftIsland& island, int threads,
+                                         SoftLanes* lanes)
 {
     const Real h = 1.0 / 240.0;
     const SoftSolveSettings settings{makeSoftness(30.0, 10.0, h), makeSoftness(60.0, 5.0, h),
@@ -95,9 +99,17 @@ void runPasses(RandomSoftIsland& island, int threads, SoftLanes* lanes)
         solveSoft(island.manifolds, island.bodies, settings, false, island.colours, threads,
                   lanes);
     }
+    restituteSoft(island.manifolds, island.bodies, 0.1, island.colours, threads, lanes);
+    std::vector<SoftContactResult> results(island.manifolds.size());
+    const std::size_t overflow = island.colours.offsets[island.colours.offsets.size() - 2];
+    for (std::size_t m = lanes != nullptr ? overflow : 0; m < results.size(); ++m) {
+        results[m] = softResultOf(island.manifolds[m]);
+    }
     if (lanes != nullptr) {
+        lanes->results(results, threads);
         lanes->unpack(island.manifolds, threads);
     }
+    return results;
 }
 
 void expectSameBits(const Vec3& a, const Vec3& b)
@@ -110,6 +122,22 @@ void expectSameBits(const Vec3& a, const Vec3& b)
 void expectSameBits(Real a, Real b)
 {
     EXPECT_EQ(std::bit_cast<std::uint64_t>(a), std::bit_cast<std::uint64_t>(b));
+}
+
+void expectSameResults(const std::vector<SoftContactResult>& one,
+                       const std::vector<SoftContactResult>& other)
+{
+    ASSERT_EQ(one.size(), other.size());
+    for (std::size_t m = 0; m < one.size(); ++m) {
+        ASSERT_EQ(one[m].pointCount, other[m].pointCount);
+        for (int k = 0; k < one[m].pointCount; ++k) {
+            expectSameBits(one[m].normalImpulses[k], other[m].normalImpulses[k]);
+            expectSameBits(one[m].normalWork[k], other[m].normalWork[k]);
+        }
+        expectSameBits(one[m].frictionImpulse, other[m].frictionImpulse);
+        expectSameBits(one[m].twistImpulse, other[m].twistImpulse);
+        expectSameBits(one[m].frictionWork, other[m].frictionWork);
+    }
 }
 
 void expectSameIslands(const RandomSoftIsland& one, const RandomSoftIsland& other)
@@ -139,18 +167,26 @@ TEST(SoftLanes, GiveTheBitsOfOneManifoldAtATime)
     RandomSoftIsland scalar(11, 60, 300);
     RandomSoftIsland wide = scalar;
     ASSERT_GT(scalar.colours.offsets.size(), 3u);
-    runPasses(scalar, 1, nullptr);
+    const std::vector<SoftContactResult> one = runPasses(scalar, 1, nullptr);
     SoftLanes lanes;
-    runPasses(wide, 1, &lanes);
+    expectSameResults(one, runPasses(wide, 1, &lanes));
     expectSameIslands(scalar, wide);
-    // the passes did work: some impulse reached zero, some disc its edge
+    // the passes did work: some impulse reached zero; and restitution had points to act on
+    // (bouncing manifolds' points that pushed and approached faster than the threshold)
     int released = 0;
-    for (const SoftManifold& m : scalar.manifolds) {
-        for (int k = 0; k < m.pointCount; ++k) {
-            released += m.points[k].normalImpulse == 0.0 ? 1 : 0;
+    int bouncing = 0;
+    for (std::size_t m = 0; m < scalar.manifolds.size(); ++m) {
+        const SoftManifold& after = scalar.manifolds[m];
+        for (int k = 0; k < after.pointCount; ++k) {
+            released += after.points[k].normalImpulse == 0.0 ? 1 : 0;
+            bouncing += after.restitution > 0.0 && after.points[k].maxNormalImpulse > 0.0 &&
+                               after.points[k].relativeVelocity < -0.1
+                           ? 1
+                           : 0;
         }
     }
     EXPECT_GT(released, 0);
+    EXPECT_GT(bouncing, 0);
 }
 
 TEST(SoftLanes, LargeColoursOnTwoThreadsGiveTheSameBits)
@@ -160,9 +196,9 @@ TEST(SoftLanes, LargeColoursOnTwoThreadsGiveTheSameBits)
     RandomSoftIsland scalar(12, 700, 1500);
     ASSERT_GE(scalar.colours.offsets[1] - scalar.colours.offsets[0], kThreadedColourManifolds);
     RandomSoftIsland wide = scalar;
-    runPasses(scalar, 1, nullptr);
+    const std::vector<SoftContactResult> one = runPasses(scalar, 1, nullptr);
     SoftLanes lanes;
-    runPasses(wide, 2, &lanes);
+    expectSameResults(one, runPasses(wide, 2, &lanes));
     expectSameIslands(scalar, wide);
 }
 

@@ -310,40 +310,57 @@ void solveSoft(std::span<SoftManifold> manifolds, std::span<SoftBody> bodies,
     }, lanes, inLanes);
 }
 
-void restituteSoft(std::span<SoftManifold> manifolds, std::span<SoftBody> bodies, Real threshold,
-                   const SoftColours& colours, int threads)
+void restituteManifold(SoftManifold& m, std::span<SoftBody> bodies, Real threshold)
 {
-    forEachManifold(manifolds.size(), colours, threads, [&](std::size_t index) {
-        SoftManifold& m = manifolds[index];
-        if (m.restitution == 0.0) {
+    SoftPair pair(bodies[m.bodyA], bodies[m.bodyB]);
+    const auto restitute = [&](SoftPoint& p) {
+        if (p.relativeVelocity > -threshold || p.maxNormalImpulse == 0.0) {
             return;
         }
-        SoftPair pair(bodies[m.bodyA], bodies[m.bodyB]);
-        const auto restitute = [&](SoftPoint& p) {
-            if (p.relativeVelocity > -threshold || p.maxNormalImpulse == 0.0) {
-                return;
-            }
-            const Real normalBefore = pair.normalVelocity(m.normal, p);
-            const Real impulse =
-                -p.normalMass * (normalBefore + m.restitution * p.relativeVelocity);
-            const Real accumulated = std::max(p.normalImpulse + impulse, 0.0);
-            const Real applied = accumulated - p.normalImpulse;
-            p.normalImpulse = accumulated;
-            pair.applyNormal(m.normal, p, applied);
-            p.normalWork += applied * (normalBefore + 0.5 * applied / p.normalMass);
-        };
-        // (12.6): a few sweeps forth and back over the manifold's points, so that a face that
-        // lands flat leaves flat
-        for (int sweep = 0; sweep < kRestitutionSweeps; ++sweep) {
-            for (int k = 0; k < m.pointCount; ++k) {
-                restitute(m.points[k]);
-            }
-            for (int k = m.pointCount - 1; k >= 0; --k) {
-                restitute(m.points[k]);
-            }
+        const Real normalBefore = pair.normalVelocity(m.normal, p);
+        const Real impulse = -p.normalMass * (normalBefore + m.restitution * p.relativeVelocity);
+        const Real accumulated = std::max(p.normalImpulse + impulse, 0.0);
+        const Real applied = accumulated - p.normalImpulse;
+        p.normalImpulse = accumulated;
+        pair.applyNormal(m.normal, p, applied);
+        p.normalWork += applied * (normalBefore + 0.5 * applied / p.normalMass);
+    };
+    // (12.6): a few sweeps forth and back over the manifold's points, so that a face that lands
+    // flat leaves flat
+    for (int sweep = 0; sweep < kRestitutionSweeps; ++sweep) {
+        for (int k = 0; k < m.pointCount; ++k) {
+            restitute(m.points[k]);
         }
-        pair.store();
-    }, nullptr, [](std::size_t) {});
+        for (int k = m.pointCount - 1; k >= 0; --k) {
+            restitute(m.points[k]);
+        }
+    }
+    pair.store();
+}
+
+void restituteSoft(std::span<SoftManifold> manifolds, std::span<SoftBody> bodies, Real threshold,
+                   const SoftColours& colours, int threads, SoftLanes* lanes)
+{
+    const auto inLanes = [&](std::size_t c) { lanes->restitute(c, bodies, threshold, threads); };
+    forEachManifold(manifolds.size(), colours, threads, [&](std::size_t index) {
+        if (manifolds[index].restitution != 0.0) {
+            restituteManifold(manifolds[index], bodies, threshold);
+        }
+    }, lanes, inLanes);
+}
+
+SoftContactResult softResultOf(const SoftManifold& m)
+{
+    SoftContactResult result;
+    result.pointCount = m.pointCount;
+    for (int k = 0; k < m.pointCount; ++k) {
+        result.normalImpulses[k] = m.points[k].normalImpulse;
+        result.normalWork[k] = m.points[k].normalWork;
+    }
+    result.frictionImpulse = m.frictionImpulse1 * m.tangent1 + m.frictionImpulse2 * m.tangent2;
+    result.twistImpulse = m.twistImpulse;
+    result.frictionWork = m.frictionWork;
+    return result;
 }
 
 } // namespace tumble

@@ -149,7 +149,26 @@ void solveSoft(std::span<SoftManifold> manifolds, std::span<SoftBody> bodies,
 
 /// (12.6): each point that pushed and began the step approaching faster than `threshold` gets
 /// the normal impulse that makes it leave at e times its approach speed, never pulling.
+/// `lanes` as for warmStartSoft.
 void restituteSoft(std::span<SoftManifold> manifolds, std::span<SoftBody> bodies,
-                   Real threshold, const SoftColours& colours, int threads);
+                   Real threshold, const SoftColours& colours, int threads,
+                   SoftLanes* lanes = nullptr);
+
+/// restituteSoft on one manifold of elasticity other than zero.
+void restituteManifold(SoftManifold& manifold, std::span<SoftBody> bodies, Real threshold);
+
+/// What a step leaves of a contact: its impulses for the next step's warm start (12.5) and its
+/// work for the ledgers (8.2).
+struct SoftContactResult {
+    int pointCount = 0;
+    std::array<Real, 4> normalImpulses{};
+    std::array<Real, 4> normalWork{};
+    /// lambda_t1 t1 + lambda_t2 t2.
+    Vec3 frictionImpulse{0.0};
+    Real twistImpulse = 0.0;
+    Real frictionWork = 0.0;
+};
+
+SoftContactResult softResultOf(const SoftManifold& manifold);
 
 } // namespace tumble

@@ -18,7 +18,8 @@ using namespace lanes;
 /// The k-th point of each lane's manifold, or nothing (`active` clear, the point's rows zero).
 struct LanePoint {
     Wide3 anchorA, anchorB, angularA, angularB, responseA, responseB;
-    Wide baseSeparation, normalMass, leverArm, normalImpulse, maxNormalImpulse, normalWork;
+    Wide baseSeparation, normalMass, leverArm, normalImpulse, maxNormalImpulse, normalWork,
+        relativeVelocity;
     Mask active;
 };
 
@@ -31,7 +32,7 @@ struct LaneBlock {
     Wide tangentK[3];
     Wide tangentMass[3];
     Wide twistK, twistMass, friction, frictionImpulse1, frictionImpulse2, twistImpulse,
-        frictionWork, invMassA, invMassB;
+        frictionWork, invMassA, invMassB, restitution;
     Mask againstStatic, movesA, movesB;
     LanePoint points[4];
     std::array<std::uint32_t, kLanes> manifold{};

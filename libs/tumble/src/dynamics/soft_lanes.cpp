@@ -3,6 +3,7 @@
 #include "dynamics/soft_lanes.hpp"
 
 #include "dynamics/soft_lane_rows.hpp"
+#include "dynamics/soft_lane_storage.hpp"
 #include "parallel_for.hpp"
 
 #include <algorithm>
@@ -31,6 +32,7 @@ void packPoint(LanePoint& p, int lane, const SoftPoint& from)
     p.normalImpulse[lane] = from.normalImpulse;
     p.maxNormalImpulse[lane] = from.maxNormalImpulse;
     p.normalWork[lane] = from.normalWork;
+    p.relativeVelocity[lane] = from.relativeVelocity;
     p.active[lane] = -1;
 }
 
@@ -62,6 +64,7 @@ void packLane(LaneBlock& block, int lane, const SoftManifold& m, std::span<const
     block.frictionWork[lane] = m.frictionWork;
     block.invMassA[lane] = bodies[m.bodyA].invMass;
     block.invMassB[lane] = bodies[m.bodyB].invMass;
+    block.restitution[lane] = m.restitution;
     block.againstStatic[lane] = m.againstStatic ? -1 : 0;
     block.movesA[lane] = bodies[m.bodyA].invMass > 0.0 ? -1 : 0;
     block.movesB[lane] = bodies[m.bodyB].invMass > 0.0 ? -1 : 0;
@@ -118,47 +121,19 @@ void warmStartBlocks(std::span<const LaneBlock> blocks, std::span<SoftBody> bodi
     }
 }
 
-/// Blocks handed to a thread at a time in a large colour.
-constexpr std::size_t kBlocksPerShare = 8;
-/// A colour of fewer manifolds than this is swept by one thread. In lanes a manifold costs a
-/// quarter of what it costs alone, yet a colour of 64 still takes several times what handing
-/// out its two shares does.
-constexpr std::size_t kThreadedLaneManifolds = 64;
-
-/// Calls `visit(first, last)` over a colour's blocks [begin, end): in shares over `threads` for a
-/// colour of kThreadedLaneManifolds or more, else at once.
-template <typename Visit>
-void forEachShare(std::size_t begin, std::size_t end, std::size_t manifolds, int threads,
-                  const Visit& visit)
-{
-    if (manifolds < kThreadedLaneManifolds || threads < 2) {
-        visit(begin, end);
-        return;
-    }
-    const std::size_t shares = (end - begin + kBlocksPerShare - 1) / kBlocksPerShare;
-    parallelFor(shares, threads, [&](std::size_t share) {
-        const std::size_t first = begin + share * kBlocksPerShare;
-        visit(first, std::min(end, first + kBlocksPerShare));
-    });
-}
-
 } // namespace
-
-struct SoftLanes::Storage {
-    std::vector<LaneBlock> blocks;
-    /// Colour c's blocks are [colourBlocks[c], colourBlocks[c + 1]); its manifold count.
-    std::vector<std::size_t> colourBlocks;
-    std::vector<std::size_t> colourManifolds;
-    /// Each block's first manifold and the lanes it fills.
-    std::vector<std::uint32_t> firstManifold;
-    std::vector<std::uint32_t> laneCount;
-};
 
 SoftLanes::SoftLanes() : m_storage(std::make_unique<Storage>()) {}
 
 SoftLanes::~SoftLanes() = default;
 
 void SoftLanes::pack(std::span<const SoftManifold> manifolds, const SoftColours& colours,
+                     std::span<const SoftBody> bodies, int threads)
+{
+    pack([&](std::size_t index) { return manifolds[index]; }, colours, bodies, threads);
+}
+
+void SoftLanes::pack(const ManifoldSource& source, const SoftColours& colours,
                      std::span<const SoftBody> bodies, int threads)
 {
     Storage& storage = *m_storage;
@@ -179,25 +154,26 @@ void SoftLanes::pack(std::span<const SoftManifold> manifolds, const SoftColours&
     // very unequal sizes) are shared out over the threads, each writing only itself
     storage.firstManifold.resize(blockCount);
     storage.laneCount.resize(blockCount);
-    std::size_t b = 0;
+    std::size_t next = 0;
     for (std::size_t c = 0; c + 1 < groups; ++c) {
         const std::size_t end = colours.offsets[c + 1];
-        for (std::size_t first = colours.offsets[c]; first < end; first += kLanes, ++b) {
-            storage.firstManifold[b] = static_cast<std::uint32_t>(first);
-            storage.laneCount[b] =
+        for (std::size_t first = colours.offsets[c]; first < end; first += kLanes, ++next) {
+            storage.firstManifold[next] = static_cast<std::uint32_t>(first);
+            storage.laneCount[next] =
                 static_cast<std::uint32_t>(std::min<std::size_t>(kLanes, end - first));
         }
     }
-    parallelFor(blockCount, threads, [&](std::size_t index) {
-        LaneBlock& block = storage.blocks[index];
+    parallelFor(blockCount, threads, [&](std::size_t b) {
+        LaneBlock& block = storage.blocks[b];
         block = emptyBlock(staticIndex);
-        block.lanes = storage.laneCount[index];
+        block.lanes = storage.laneCount[b];
         for (std::uint32_t lane = 0; lane < block.lanes; ++lane) {
-            const std::uint32_t m = storage.firstManifold[index] + lane;
-            block.manifold[lane] = m;
-            block.bodyA[lane] = manifolds[m].bodyA;
-            block.bodyB[lane] = manifolds[m].bodyB;
-            packLane(block, static_cast<int>(lane), manifolds[m], bodies);
+            const std::uint32_t index = storage.firstManifold[b] + lane;
+            const SoftManifold m = source(index);
+            block.manifold[lane] = index;
+            block.bodyA[lane] = m.bodyA;
+            block.bodyB[lane] = m.bodyB;
+            packLane(block, static_cast<int>(lane), m, bodies);
         }
     });
 }
@@ -228,27 +204,6 @@ void SoftLanes::solve(std::size_t colour, std::span<SoftBody> bodies,
                  [&](std::size_t first, std::size_t last) {
                      solveBlocks({storage.blocks.data() + first, last - first}, bodies, lanes);
                  });
-}
-
-void SoftLanes::unpack(std::span<SoftManifold> manifolds, int threads) const
-{
-    const Storage& storage = *m_storage;
-    parallelFor(storage.blocks.size(), threads, [&](std::size_t b) {
-        const LaneBlock& block = storage.blocks[b];
-        for (std::uint32_t lane = 0; lane < block.lanes; ++lane) {
-            SoftManifold& m = manifolds[block.manifold[lane]];
-            for (int k = 0; k < m.pointCount; ++k) {
-                const LanePoint& p = block.points[k];
-                m.points[k].normalImpulse = p.normalImpulse[lane];
-                m.points[k].maxNormalImpulse = p.maxNormalImpulse[lane];
-                m.points[k].normalWork = p.normalWork[lane];
-            }
-            m.frictionImpulse1 = block.frictionImpulse1[lane];
-            m.frictionImpulse2 = block.frictionImpulse2[lane];
-            m.twistImpulse = block.twistImpulse[lane];
-            m.frictionWork = block.frictionWork[lane];
-        }
-    });
 }
 
 } // namespace tumble

@@ -6,6 +6,7 @@
 #include "dynamics/soft_contact_solver.hpp"
 
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <span>
 
@@ -20,9 +21,16 @@ public:
     SoftLanes(const SoftLanes&) = delete;
     SoftLanes& operator=(const SoftLanes&) = delete;
 
-    /// Copies the manifolds of every colour but the overflow, their rows and impulses, with the
-    /// inverse masses of `bodies` (whose last entry is the static body), the blocks spread over
-    /// `threads`.
+    /// The manifold of a contact, by its index in colour order.
+    using ManifoldSource = std::function<SoftManifold(std::size_t)>;
+
+    /// Packs the manifolds `source` gives for every colour but the overflow, their rows and
+    /// impulses, with the inverse masses of `bodies` (whose last entry is the static body), the
+    /// blocks spread over `threads`; each manifold is asked for once, on the thread that packs
+    /// it, so that a large island's manifolds need not be kept anywhere else.
+    void pack(const ManifoldSource& source, const SoftColours& colours,
+              std::span<const SoftBody> bodies, int threads);
+    /// The same from manifolds kept.
     void pack(std::span<const SoftManifold> manifolds, const SoftColours& colours,
               std::span<const SoftBody> bodies, int threads);
 
@@ -35,8 +43,15 @@ public:
     void solve(std::size_t colour, std::span<SoftBody> bodies, const SoftSolveSettings& settings,
                bool useBias, int threads);
 
+    /// restituteSoft over colour `colour`'s manifolds: each lane of elasticity other than zero
+    /// through restituteManifold, so the bits are those of the manifold alone.
+    void restitute(std::size_t colour, std::span<SoftBody> bodies, Real threshold, int threads);
+
     /// Writes the impulses and work back to the manifolds packed, the blocks over `threads`.
     void unpack(std::span<SoftManifold> manifolds, int threads) const;
+
+    /// softResultOf for each manifold packed, into its index in `results`.
+    void results(std::span<SoftContactResult> results, int threads) const;
 
 private:
     struct Storage;

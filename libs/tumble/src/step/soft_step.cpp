@@ -24,7 +24,9 @@ namespace {
 struct SoftBuffers {
     std::vector<IslandContact> contacts;
     std::vector<Vec3> centres;
+    /// The manifolds of the overflow group, or of every contact of an island not in lanes.
     std::vector<SoftManifold> manifolds;
+    std::vector<SoftContactResult> results;
     SoftColours colours;
     SoftLanes lanes;
     /// Whether this step's colours are packed in `lanes`.
@@ -114,6 +116,11 @@ public:
 private:
     void prepare(Real h);
     void orderByColour();
+    /// (12.3) and (12.5): contact k's manifold, started from its owner's kept impulses.
+    SoftManifold manifoldOf(std::size_t k) const;
+    /// The first contact that is not packed in lanes: the overflow group's, or 0.
+    std::size_t firstUnpacked() const;
+    void collectResults();
     void substep(Real h, const SoftSolveSettings& solve);
     void finish();
     /// Adds to each body's work what its kinetic energy gained since `m_buffers.kinetic`.
@@ -144,13 +151,12 @@ void SoftStep::run(Real dt)
     for (int s = 0; s < substeps; ++s) {
         substep(h, solve);
     }
-    if (m_buffers.inLanes) {
-        m_buffers.lanes.unpack(m_buffers.manifolds, m_context.threads);
-    }
     saveKinetic();
     restituteSoft(m_buffers.manifolds, m_buffers.bodies, m_settings.restitutionThreshold,
-                  m_buffers.colours, m_context.threads);
+                  m_buffers.colours, m_context.threads,
+                  m_buffers.inLanes ? &m_buffers.lanes : nullptr);
     addBodyWork();
+    collectResults();
     finish();
     ++m_events.statistics.islands;
     m_events.statistics.bodies += m_island.bodies.size();
@@ -182,24 +188,48 @@ void SoftStep::prepare(Real h)
     const Real dt = h * std::max(1, m_settings.softSubsteps);
     findIslandContacts(m_island, m_slots, m_context, dt, true, m_buffers.contacts);
     orderByColour();
-    m_buffers.manifolds.resize(m_buffers.contacts.size());
-    parallelFor(m_buffers.contacts.size(), m_context.threads, [&](std::size_t k) {
-        m_buffers.manifolds[k] = softManifoldOf(m_buffers.contacts[k], m_buffers.bodies,
-                                                m_buffers.centres, count);
-    });
     std::size_t points = 0;
     for (const IslandContact& contact : m_buffers.contacts) {
         points += static_cast<std::size_t>(contact.manifold.pointCount);
     }
     m_events.statistics.contactPoints += points;
-    // (12.5): last step's impulses, matched by the other side and the points' feature keys
-    loadSoftWarmStart(m_island, m_slots, m_buffers.contacts, m_buffers.manifolds,
-                      m_settings.contactTolerance, m_context.threads);
-    // (12.9): a large island's colours four manifolds at a time, the same bits
-    m_buffers.inLanes = m_buffers.manifolds.size() >= kLaneManifolds;
+    // (12.9): a large island's colours four manifolds at a time, the same bits, each manifold
+    // built where it is packed; the overflow group (or a small island) keeps its manifolds
+    m_buffers.inLanes = m_buffers.contacts.size() >= kLaneManifolds;
+    const std::size_t first = firstUnpacked();
+    m_buffers.manifolds.resize(m_buffers.contacts.size());
+    parallelFor(m_buffers.contacts.size() - first, m_context.threads,
+                [&](std::size_t i) { m_buffers.manifolds[first + i] = manifoldOf(first + i); });
     if (m_buffers.inLanes) {
-        m_buffers.lanes.pack(m_buffers.manifolds, m_buffers.colours, m_buffers.bodies,
-                             m_context.threads);
+        m_buffers.lanes.pack([&](std::size_t k) { return manifoldOf(k); }, m_buffers.colours,
+                             m_buffers.bodies, m_context.threads);
+    }
+}
+
+SoftManifold SoftStep::manifoldOf(std::size_t k) const
+{
+    SoftManifold m = softManifoldOf(m_buffers.contacts[k], m_buffers.bodies, m_buffers.centres,
+                                    m_island.bodies.size());
+    // (12.5): last step's impulses, matched by the other side and the points' feature keys
+    warmStartFromCache(m_island, m_slots, m_buffers.contacts[k], m,
+                       m_settings.contactTolerance);
+    return m;
+}
+
+std::size_t SoftStep::firstUnpacked() const
+{
+    const std::vector<std::uint32_t>& offsets = m_buffers.colours.offsets;
+    return m_buffers.inLanes && offsets.size() >= 2 ? offsets[offsets.size() - 2] : 0;
+}
+
+void SoftStep::collectResults()
+{
+    m_buffers.results.resize(m_buffers.contacts.size());
+    if (m_buffers.inLanes) {
+        m_buffers.lanes.results(m_buffers.results, m_context.threads);
+    }
+    for (std::size_t k = firstUnpacked(); k < m_buffers.contacts.size(); ++k) {
+        m_buffers.results[k] = softResultOf(m_buffers.manifolds[k]);
     }
 }
 
@@ -272,14 +302,14 @@ void SoftStep::finish()
 {
     const std::size_t count = m_island.bodies.size();
     // (12.5): the last sub-step's impulses start the next step's sub-steps
-    storeSoftWarmStart(m_island, m_slots, m_buffers.contacts, m_buffers.manifolds,
+    storeSoftWarmStart(m_island, m_slots, m_buffers.contacts, m_buffers.results,
                        m_context.threads);
     IslandWork total;
-    for (const SoftManifold& m : m_buffers.manifolds) {
-        for (int k = 0; k < m.pointCount; ++k) {
-            total.normal += m.points[k].normalWork;
+    for (const SoftContactResult& result : m_buffers.results) {
+        for (int k = 0; k < result.pointCount; ++k) {
+            total.normal += result.normalWork[k];
         }
-        total.friction += m.frictionWork;
+        total.friction += result.frictionWork;
     }
     std::vector<SolverBody>& inverse = m_buffers.inverseMasses;
     inverse.resize(count);
@@ -300,13 +330,17 @@ void SoftStep::finish()
         m_slots[m_island.bodies[i]].touchingGround = false;
     });
     // a body touches when one of its points pushed in the last sub-step (7.1)
-    for (const SoftManifold& m : m_buffers.manifolds) {
-        const bool pushed = std::any_of(m.points.begin(), m.points.begin() + m.pointCount,
-                                        [](const SoftPoint& p) { return p.normalImpulse > 0.0; });
+    for (std::size_t c = 0; c < m_buffers.results.size(); ++c) {
+        const SoftContactResult& result = m_buffers.results[c];
+        const bool pushed =
+            std::any_of(result.normalImpulses.begin(),
+                        result.normalImpulses.begin() + result.pointCount,
+                        [](Real impulse) { return impulse > 0.0; });
         if (!pushed) {
             continue;
         }
-        for (const std::uint32_t side : {m.bodyA, m.bodyB}) {
+        for (const std::uint32_t side : {m_buffers.contacts[c].solverA,
+                                         m_buffers.contacts[c].solverB}) {
             if (side < count) {
                 m_slots[m_island.bodies[side]].touchingGround = true;
             }

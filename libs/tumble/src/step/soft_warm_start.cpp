@@ -57,45 +57,38 @@ std::array<int, 4> matchPoints(const IslandContact& contact, const CachedSoftCon
 
 } // namespace
 
-void loadSoftWarmStart(const CoupledIsland& island, std::span<const BodySlot> slots,
-                       std::span<const IslandContact> contacts, std::span<SoftManifold> manifolds,
-                       Real tolerance, int threads)
+void warmStartFromCache(const CoupledIsland& island, std::span<const BodySlot> slots,
+                        const IslandContact& contact, SoftManifold& m, Real tolerance)
 {
-    // each contact reads its owner's cache and writes only its own manifold
-    parallelFor(contacts.size(), threads, [&](std::size_t index) {
-        const IslandContact& contact = contacts[index];
-        SoftManifold& m = manifolds[index];
-        const std::vector<CachedSoftContact>& cache =
-            slots[island.bodies[contact.owner]].softContacts;
-        const auto kept = std::find_if(cache.begin(), cache.end(), [&](const CachedSoftContact& c) {
-            return c.other == contact.ownerKey;
-        });
-        if (kept == cache.end()) {
-            return;
-        }
-        const Body& owner = slots[island.bodies[contact.owner]].body;
-        const std::array<int, 4> match =
-            matchPoints(contact, *kept, owner, kWarmStartReach * tolerance);
-        for (int k = 0; k < m.pointCount; ++k) {
-            if (match[k] >= 0) {
-                m.points[k].normalImpulse = kept->normalImpulses[match[k]];
-            }
-        }
-        m.frictionImpulse1 = glm::dot(m.tangent1, kept->frictionImpulse);
-        m.frictionImpulse2 = glm::dot(m.tangent2, kept->frictionImpulse);
-        m.twistImpulse = kept->twistImpulse;
+    const std::vector<CachedSoftContact>& cache = slots[island.bodies[contact.owner]].softContacts;
+    const auto kept = std::find_if(cache.begin(), cache.end(), [&](const CachedSoftContact& c) {
+        return c.other == contact.ownerKey;
     });
+    if (kept == cache.end()) {
+        return;
+    }
+    const Body& owner = slots[island.bodies[contact.owner]].body;
+    const std::array<int, 4> match =
+        matchPoints(contact, *kept, owner, kWarmStartReach * tolerance);
+    for (int k = 0; k < m.pointCount; ++k) {
+        if (match[k] >= 0) {
+            m.points[k].normalImpulse = kept->normalImpulses[match[k]];
+        }
+    }
+    m.frictionImpulse1 = glm::dot(m.tangent1, kept->frictionImpulse);
+    m.frictionImpulse2 = glm::dot(m.tangent2, kept->frictionImpulse);
+    m.twistImpulse = kept->twistImpulse;
 }
 
 void storeSoftWarmStart(const CoupledIsland& island, std::span<BodySlot> slots,
                         std::span<const IslandContact> contacts,
-                        std::span<const SoftManifold> manifolds, int threads)
+                        std::span<const SoftContactResult> results, int threads)
 {
     for (const std::uint32_t slot : island.bodies) {
         slots[slot].softContacts.clear();
     }
     // each owner's cache is written by one share, from its contacts in their order; every share
-    // reads the contacts in order, so the large manifolds stream from memory
+    // reads the contacts and their results in order, as they lie in memory
     const auto shares = static_cast<std::size_t>(std::max(1, threads));
     parallelFor(shares, threads, [&](std::size_t share) {
         for (std::size_t index = 0; index < contacts.size(); ++index) {
@@ -103,19 +96,18 @@ void storeSoftWarmStart(const CoupledIsland& island, std::span<BodySlot> slots,
             if (contact.owner % shares != share) {
                 continue;
             }
-            const SoftManifold& m = manifolds[index];
+            const SoftContactResult& result = results[index];
             BodySlot& slot = slots[island.bodies[contact.owner]];
             CachedSoftContact kept;
             kept.other = contact.ownerKey;
-            kept.pointCount = m.pointCount;
-            for (int k = 0; k < m.pointCount; ++k) {
+            kept.pointCount = result.pointCount;
+            for (int k = 0; k < result.pointCount; ++k) {
                 kept.ids[k] = contact.manifold.points[k].id;
                 kept.localPositions[k] = inBodyFrame(slot.body, contact.manifold.points[k].position);
-                kept.normalImpulses[k] = m.points[k].normalImpulse;
+                kept.normalImpulses[k] = result.normalImpulses[k];
             }
-            kept.frictionImpulse =
-                m.frictionImpulse1 * m.tangent1 + m.frictionImpulse2 * m.tangent2;
-            kept.twistImpulse = m.twistImpulse;
+            kept.frictionImpulse = result.frictionImpulse;
+            kept.twistImpulse = result.twistImpulse;
             slot.softContacts.push_back(kept);
         }
     });

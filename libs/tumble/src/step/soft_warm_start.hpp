@@ -11,19 +11,17 @@
 
 namespace tumble {
 
-/// Starts each manifold from the impulses its owner kept for the same other side: each point's
-/// normal impulse where a point of the same feature key was kept (else one within ten contact
-/// tolerances of where it is), the friction impulse projected on the manifold's tangents, and
-/// the twist impulse. A contact new to its owner starts from none. The contacts spread over
-/// `threads`.
-void loadSoftWarmStart(const CoupledIsland& island, std::span<const BodySlot> slots,
-                       std::span<const IslandContact> contacts, std::span<SoftManifold> manifolds,
-                       Real tolerance, int threads);
+/// Starts a contact's manifold from the impulses its owner kept for the same other side: each
+/// point's normal impulse where a point of the same feature key was kept (else one within ten
+/// contact tolerances of where it is), the friction impulse projected on the manifold's
+/// tangents, and the twist impulse. A contact new to its owner starts from none.
+void warmStartFromCache(const CoupledIsland& island, std::span<const BodySlot> slots,
+                        const IslandContact& contact, SoftManifold& manifold, Real tolerance);
 
-/// Keeps the manifolds' impulses in their owners' caches, replacing the island's old ones; each
+/// Keeps the contacts' impulses in their owners' caches, replacing the island's old ones; each
 /// owner's contacts go to one of `threads`.
 void storeSoftWarmStart(const CoupledIsland& island, std::span<BodySlot> slots,
                         std::span<const IslandContact> contacts,
-                        std::span<const SoftManifold> manifolds, int threads);
+                        std::span<const SoftContactResult> results, int threads);
 
 } // namespace tumble

@@ -1,0 +1,127 @@
+// The soft step's lanes after the sub-steps: restitution lane by lane, and what each manifold
+// packed leaves (docs/physics/12-soft-step.md, (12.6), (12.9)).
+#include "dynamics/soft_lanes.hpp"
+
+#include "dynamics/soft_lane_rows.hpp"
+#include "dynamics/soft_lane_storage.hpp"
+#include "parallel_for.hpp"
+
+namespace tumble {
+
+namespace {
+
+using namespace lanes;
+using namespace soft_rows;
+
+/// The points of a lane's manifold: those its pack made active.
+int pointsOf(const LaneBlock& block, std::uint32_t lane)
+{
+    int count = 0;
+    while (count < 4 && block.points[count].active[lane] != 0) {
+        ++count;
+    }
+    return count;
+}
+
+/// What restituteManifold reads and writes of a lane's manifold, as the manifold alone held it.
+SoftManifold restitutionRowsOf(const LaneBlock& block, std::uint32_t lane)
+{
+    const auto l = static_cast<int>(lane);
+    SoftManifold m;
+    m.bodyA = block.bodyA[lane];
+    m.bodyB = block.bodyB[lane];
+    m.pointCount = pointsOf(block, lane);
+    m.normal = laneOf(block.normal, l);
+    m.restitution = block.restitution[lane];
+    for (int k = 0; k < m.pointCount; ++k) {
+        const LanePoint& from = block.points[k];
+        SoftPoint& p = m.points[k];
+        p.angularA = laneOf(from.angularA, l);
+        p.angularB = laneOf(from.angularB, l);
+        p.responseA = laneOf(from.responseA, l);
+        p.responseB = laneOf(from.responseB, l);
+        p.normalMass = from.normalMass[lane];
+        p.relativeVelocity = from.relativeVelocity[lane];
+        p.normalImpulse = from.normalImpulse[lane];
+        p.maxNormalImpulse = from.maxNormalImpulse[lane];
+        p.normalWork = from.normalWork[lane];
+    }
+    return m;
+}
+
+/// restituteManifold on each bouncing lane of the blocks, its impulses and work written back.
+void restituteBlocks(std::span<LaneBlock> blocks, std::span<SoftBody> bodies, Real threshold)
+{
+    for (LaneBlock& block : blocks) {
+        for (std::uint32_t lane = 0; lane < block.lanes; ++lane) {
+            if (block.restitution[lane] == 0.0) {
+                continue;
+            }
+            SoftManifold m = restitutionRowsOf(block, lane);
+            restituteManifold(m, bodies, threshold);
+            for (int k = 0; k < m.pointCount; ++k) {
+                block.points[k].normalImpulse[lane] = m.points[k].normalImpulse;
+                block.points[k].normalWork[lane] = m.points[k].normalWork;
+            }
+        }
+    }
+}
+
+} // namespace
+
+void SoftLanes::restitute(std::size_t colour, std::span<SoftBody> bodies, Real threshold,
+                          int threads)
+{
+    Storage& storage = *m_storage;
+    forEachShare(storage.colourBlocks[colour], storage.colourBlocks[colour + 1],
+                 storage.colourManifolds[colour], threads,
+                 [&](std::size_t first, std::size_t last) {
+                     restituteBlocks({storage.blocks.data() + first, last - first}, bodies,
+                                     threshold);
+                 });
+}
+
+void SoftLanes::results(std::span<SoftContactResult> results, int threads) const
+{
+    const Storage& storage = *m_storage;
+    parallelFor(storage.blocks.size(), threads, [&](std::size_t b) {
+        const LaneBlock& block = storage.blocks[b];
+        for (std::uint32_t lane = 0; lane < block.lanes; ++lane) {
+            const auto l = static_cast<int>(lane);
+            SoftContactResult& result = results[block.manifold[lane]];
+            result.pointCount = pointsOf(block, lane);
+            for (int k = 0; k < result.pointCount; ++k) {
+                result.normalImpulses[k] = block.points[k].normalImpulse[lane];
+                result.normalWork[k] = block.points[k].normalWork[lane];
+            }
+            // as softResultOf forms it
+            result.frictionImpulse = block.frictionImpulse1[lane] * laneOf(block.tangent1, l) +
+                                     block.frictionImpulse2[lane] * laneOf(block.tangent2, l);
+            result.twistImpulse = block.twistImpulse[lane];
+            result.frictionWork = block.frictionWork[lane];
+        }
+    });
+}
+
+void SoftLanes::unpack(std::span<SoftManifold> manifolds, int threads) const
+{
+    const Storage& storage = *m_storage;
+    parallelFor(storage.blocks.size(), threads, [&](std::size_t b) {
+        const LaneBlock& block = storage.blocks[b];
+        for (std::uint32_t lane = 0; lane < block.lanes; ++lane) {
+            SoftManifold& m = manifolds[block.manifold[lane]];
+            for (int k = 0; k < m.pointCount; ++k) {
+                const LanePoint& p = block.points[k];
+                m.points[k].normalImpulse = p.normalImpulse[lane];
+                m.points[k].maxNormalImpulse = p.maxNormalImpulse[lane];
+                m.points[k].normalWork = p.normalWork[lane];
+            }
+            m.frictionImpulse1 = block.frictionImpulse1[lane];
+            m.frictionImpulse2 = block.frictionImpulse2[lane];
+            m.twistImpulse = block.twistImpulse[lane];
+            m.frictionWork = block.frictionWork[lane];
+        }
+    });
+}
+
+} // namespace tumble
