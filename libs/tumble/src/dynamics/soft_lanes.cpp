@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstring>
+#include <type_traits>
 #include <vector>
 
 namespace tumble {
@@ -73,17 +75,19 @@ void packLane(LaneBlock& block, int lane, const SoftManifold& m, std::span<const
     }
 }
 
-/// An empty block: every lane the static body's, every row zero; an absent point has a unit
-/// mass so that nothing divides by zero.
-LaneBlock emptyBlock(std::uint32_t staticIndex)
+static_assert(std::is_trivially_copyable_v<LaneBlock>);
+
+/// Empties a block where it lies (a block is kilobytes: a temporary copied in costs more than
+/// its fill): every lane the static body's, every row zero; an absent point has a unit mass so
+/// that nothing divides by zero.
+void emptyBlock(LaneBlock& block, std::uint32_t staticIndex)
 {
-    LaneBlock block{};
+    std::memset(static_cast<void*>(&block), 0, sizeof block);
     block.bodyA.fill(staticIndex);
     block.bodyB.fill(staticIndex);
     for (LanePoint& p : block.points) {
         p.normalMass = splat(1.0);
     }
-    return block;
 }
 
 /// solveSoft over blocks. On x86-64 with GCC it is compiled for AVX2 and for the baseline, and
@@ -165,7 +169,7 @@ void SoftLanes::pack(const ManifoldSource& source, const SoftColours& colours,
     }
     parallelFor(blockCount, threads, [&](std::size_t b) {
         LaneBlock& block = storage.blocks[b];
-        block = emptyBlock(staticIndex);
+        emptyBlock(block, staticIndex);
         block.lanes = storage.laneCount[b];
         for (std::uint32_t lane = 0; lane < block.lanes; ++lane) {
             const std::uint32_t index = storage.firstManifold[b] + lane;
