@@ -14,6 +14,16 @@
 namespace tumble {
 namespace {
 
+/// carryPairGeometry into a fresh geometry.
+CuboidPairGeometry carriedFrom(const CuboidPairGeometry& found, const Transform& keptA,
+                               const Transform& keptB, const Transform& poseA,
+                               const Transform& poseB, Real move)
+{
+    CuboidPairGeometry carried;
+    carryPairGeometry(found, keptA, keptB, poseA, poseB, move, carried);
+    return carried;
+}
+
 const Vec3 kUnit(1.0);
 const Vec3 kHalf(0.5);
 /// A unit cube on another, sunk 1e-5 into it, shifted so their faces overlap in a rectangle and
@@ -66,7 +76,7 @@ TEST(CarriedPairGeometry, APairMovedAsOneHasNotMovedRelativeToItself)
     EXPECT_LT(move, 1e-14);
     // carried, the contact is the one a fresh search finds at the moved poses
     const CuboidPairGeometry carried =
-        carryPairGeometry(found(kBelow, kAbove), kBelow, kAbove, a, b, move);
+        carriedFrom(found(kBelow, kAbove), kBelow, kAbove, a, b, move);
     const PairManifold kept = manifoldWithin(carried, kMargin);
     const PairManifold fresh = manifoldWithin(found(a, b), kMargin);
     ASSERT_EQ(fresh.pointCount, 4);
@@ -110,7 +120,7 @@ TEST(CarriedPairGeometry, WithinTheReachTheContactStaysWithinTheMoveOfAFreshOne)
     const Real move = relativeMove(kBelow, kAbove, kBelow, b, kHalf);
     ASSERT_LE(move, reach);
     const CuboidPairGeometry carried =
-        carryPairGeometry(found(kBelow, kAbove), kBelow, kAbove, kBelow, b, move);
+        carriedFrom(found(kBelow, kAbove), kBelow, kAbove, kBelow, b, move);
     const PairManifold kept = manifoldWithin(carried, kMargin);
     const PairManifold fresh = manifoldWithin(found(kBelow, b), kMargin);
     ASSERT_EQ(kept.pointCount, fresh.pointCount);
@@ -133,7 +143,7 @@ TEST(CarriedPairGeometry, APairCarriedAsApartStaysApart)
     const Transform closer{apart.position - Vec3(0.0, 4e-5, 0.0), apart.orientation};
     const Real move = relativeMove(kBelow, apart, kBelow, closer, kHalf);
     const CuboidPairGeometry carried =
-        carryPairGeometry(stopped, kBelow, apart, kBelow, closer, move);
+        carriedFrom(stopped, kBelow, apart, kBelow, closer, move);
     EXPECT_DOUBLE_EQ(carried.largestSeparation, stopped.largestSeparation - move);
     EXPECT_LE(carried.largestSeparation, found(kBelow, closer).largestSeparation);
     EXPECT_TRUE(decidesMargin(carried, kMargin));
@@ -158,7 +168,7 @@ TEST(CarriedPairGeometry, TheCacheCarriesOnlyWhenAskedAndWithinTheReach)
     const Transform nearer{near.position + Vec3(0.5 * reach, 0.0, 0.0), near.orientation};
     const CuboidPairGeometry& carried =
         cache.geometry(7, kBelow, kHalf, nearer, kHalf, kMargin, true);
-    const CuboidPairGeometry expected = carryPairGeometry(
+    const CuboidPairGeometry expected = carriedFrom(
         found(kBelow, near), kBelow, near, kBelow, nearer, 0.5 * reach);
     EXPECT_EQ(carried.points.points[0].position, expected.points.points[0].position);
     const Transform far{near.position + Vec3(1.5 * reach, 0.0, 0.0), near.orientation};

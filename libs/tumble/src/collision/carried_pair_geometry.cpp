@@ -31,14 +31,17 @@ Real carryReach(const Vec3& halfExtentsA, const Vec3& halfExtentsB)
     return kCarryShare * shortest;
 }
 
-CuboidPairGeometry carryPairGeometry(const CuboidPairGeometry& found, const Transform& keptA,
-                                     const Transform& keptB, const Transform& poseA,
-                                     const Transform& poseB, Real move)
+void carryPairGeometry(const CuboidPairGeometry& found, const Transform& keptA,
+                       const Transform& keptB, const Transform& poseA, const Transform& poseB,
+                       Real move, CuboidPairGeometry& carried)
 {
-    CuboidPairGeometry carried = found;
     carried.largestSeparation = found.largestSeparation - move;
+    carried.complete = found.complete;
+    carried.normalOfB = found.normalOfB;
+    carried.normal = found.normal;
+    carried.points.count = found.complete ? found.points.count : 0;
     if (!found.complete) {
-        return carried;
+        return;
     }
     // the rotation of each body since the geometry was found, R(q) R(q0)^T
     const Mat3 turnA = glm::mat3_cast(poseA.orientation * glm::conjugate(keptA.orientation));
@@ -54,8 +57,8 @@ CuboidPairGeometry carryPairGeometry(const CuboidPairGeometry& found, const Tran
         PairContactPoint& to = carried.points.points[k];
         to.position = 0.5 * (movedA + movedB);
         to.separation = glm::dot(movedB - movedA, carried.normal);
+        to.id = point.id;
     }
-    return carried;
 }
 
 } // namespace tumble

@@ -20,13 +20,14 @@ Real relativeMove(const Transform& keptA, const Transform& keptB, const Transfor
 /// The largest relative move (9.12) lets a pair of boxes of these half extents carry its geometry.
 Real carryReach(const Vec3& halfExtentsA, const Vec3& halfExtentsB);
 
-/// `found` (a geometry found at keptA, keptB) at poseA, poseB: each point's ends on the two
-/// surfaces moved with their bodies, the normal turned with the body whose face or edge it is,
-/// the separations measured again along it (9.12). A geometry whose search stopped short
-/// (separated) keeps no points. Either way the largest separation is lowered by `move`, the
-/// relative move's bound, so that it stays a lower bound.
-CuboidPairGeometry carryPairGeometry(const CuboidPairGeometry& found, const Transform& keptA,
-                                     const Transform& keptB, const Transform& poseA,
-                                     const Transform& poseB, Real move);
+/// `found` (a geometry found at keptA, keptB) at poseA, poseB, into `carried` (not `found`):
+/// each point's ends on the two surfaces moved with their bodies, the normal turned with the
+/// body whose face or edge it is, the separations measured again along it (9.12). A geometry
+/// whose search stopped short (separated) keeps no points. Either way the largest separation is
+/// lowered by `move`, the relative move's bound, so that it stays a lower bound. Written in
+/// place: a geometry holds eight points, and a pair carried every step is copied otherwise.
+void carryPairGeometry(const CuboidPairGeometry& found, const Transform& keptA,
+                       const Transform& keptB, const Transform& poseA, const Transform& poseB,
+                       Real move, CuboidPairGeometry& carried);
 
 } // namespace tumble

@@ -58,8 +58,8 @@ const CuboidPairGeometry& PairGeometryCache::geometry(std::uint32_t other, const
         }
         const Real move = relativeMove(entry.poseA, entry.poseB, poseA, poseB, halfExtentsB);
         if (move <= carryReach(halfExtentsA, halfExtentsB)) {
-            entry.carried = carryPairGeometry(entry.geometry, entry.poseA, entry.poseB, poseA,
-                                              poseB, move);
+            carryPairGeometry(entry.geometry, entry.poseA, entry.poseB, poseA, poseB, move,
+                              entry.carried);
             entry.carriedA = poseA;
             entry.carriedB = poseB;
             if (decidesMargin(entry.carried, margin)) {
