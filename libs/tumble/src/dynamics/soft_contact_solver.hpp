@@ -132,9 +132,9 @@ struct SoftColours {
 
 class SoftLanes;
 
-/// Applies each manifold's accumulated impulses to its bodies (12.5). With `lanes` (packed from
-/// these manifolds and colours) the colours are read from and written to the lanes, the
-/// overflow group from and to `manifolds`.
+/// Applies each manifold's accumulated impulses to its bodies (12.5). With `lanes` (packed with
+/// these colours) the colours are read from and written to the lanes, and only the overflow
+/// group from and to `manifolds`.
 void warmStartSoft(std::span<const SoftManifold> manifolds, std::span<SoftBody> bodies,
                    const SoftColours& colours, int threads, SoftLanes* lanes = nullptr);
 
