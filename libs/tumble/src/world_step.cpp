@@ -77,13 +77,16 @@ void World::findPairs(detail::StepScratch& scratch, Real dt)
     // body near another but apart keeps the exact path (10.4)
     const std::span<const ProxyPair> pairs = scratch.broadPhase.pairs();
     scratch.pairTouches.assign(pairs.size(), 0);
-    // the soft step carries a pair's geometry with its bodies (9.12)
+    // the soft step carries a pair's geometry with its bodies (9.12), and its narrow phase
+    // over the same step reads the points found here
     const bool carry = m_settings.solver == ContactSolver::Soft;
+    scratch.pairManifolds.resize(carry ? pairs.size() : 0);
     const auto testPair = [&](std::size_t k) {
         const std::uint32_t a = scratch.proxies[pairs[k].a].body;
         const std::uint32_t b = scratch.proxies[pairs[k].b].body;
+        PairManifold* manifold = carry ? &scratch.pairManifolds[k] : nullptr;
         scratch.pairTouches[k] = mayTouch(m_slots, std::min(a, b), std::max(a, b),
-                                          m_settings.gravity, dt, margin, carry) ? 1 : 0;
+                                          m_settings.gravity, dt, margin, carry, manifold) ? 1 : 0;
     };
     const int threads = pairs.size() >= kLargeIslandPairs ? threadCount() : 1;
     if (threads > 1) {
@@ -108,10 +111,12 @@ void World::findPairs(detail::StepScratch& scratch, Real dt)
         }
     }
     scratch.links.clear();
+    scratch.linkPairs.clear();
     for (std::size_t k = 0; k < pairs.size(); ++k) {
         if (scratch.pairTouches[k] != 0) {
             scratch.links.push_back(
                 {scratch.proxies[pairs[k].a].body, scratch.proxies[pairs[k].b].body});
+            scratch.linkPairs.push_back(static_cast<std::uint32_t>(k));
         }
     }
     // (9.11): kept geometry nobody asked for since the last broad phase is of a pair gone
@@ -175,6 +180,10 @@ void World::buildStepIslands(detail::StepScratch& scratch, Real dt)
         for (const std::uint32_t link : islandLinks) {
             const ProxyPair& pair = scratch.links[link];
             island.pairs.emplace_back(std::min(pair.a, pair.b), std::max(pair.a, pair.b));
+            if (!scratch.pairManifolds.empty()) {
+                island.pairManifolds.push_back(
+                    &scratch.pairManifolds[scratch.linkPairs[link]]);
+            }
         }
     }
 }

@@ -17,7 +17,7 @@ constexpr int kRestitutionSweeps = 4;
 /// Calls `visit(i)` for every manifold in colour order: each colour's manifolds move no dynamic
 /// body twice, so a large colour is split over `threads` and the result is the same for any
 /// count (11.5c); the overflow group goes in order on one thread. With `lanes`, a colour is
-/// handed to `inLanes(c)` instead.
+/// handed to `inLanes(c)` instead, and `visit(i)` is given the overflow's i-th manifold.
 template <typename Visit, typename InLanes>
 void forEachManifold(std::size_t count, const SoftColours& colours, int threads,
                      const Visit& visit, const SoftLanes* lanes, const InLanes& inLanes)
@@ -29,6 +29,7 @@ void forEachManifold(std::size_t count, const SoftColours& colours, int threads,
         return;
     }
     const std::size_t groups = colours.offsets.size() - 1;
+    const std::size_t base = lanes != nullptr ? colours.offsets[groups - 1] : 0;
     for (std::size_t c = 0; c < groups; ++c) {
         const std::size_t first = colours.offsets[c];
         const std::size_t size = colours.offsets[c + 1] - first;
@@ -38,7 +39,7 @@ void forEachManifold(std::size_t count, const SoftColours& colours, int threads,
             continue;
         }
         const int used = !overflow && size >= kThreadedColourManifolds ? threads : 1;
-        parallelFor(size, used, [&](std::size_t i) { visit(first + i); });
+        parallelFor(size, used, [&](std::size_t i) { visit(first - base + i); });
     }
 }
 

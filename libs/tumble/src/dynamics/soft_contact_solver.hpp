@@ -133,8 +133,8 @@ struct SoftColours {
 class SoftLanes;
 
 /// Applies each manifold's accumulated impulses to its bodies (12.5). With `lanes` (packed with
-/// these colours) the colours are read from and written to the lanes, and only the overflow
-/// group from and to `manifolds`.
+/// these colours) the colours are read from and written to the lanes, and `manifolds` holds
+/// only the overflow group, from its first manifold.
 void warmStartSoft(std::span<const SoftManifold> manifolds, std::span<SoftBody> bodies,
                    const SoftColours& colours, int threads, SoftLanes* lanes = nullptr);
 

@@ -14,15 +14,15 @@ namespace tumble {
 
 namespace soft_rows {
 
-/// Blocks handed to a thread at a time in a large colour.
-inline constexpr std::size_t kBlocksPerShare = 8;
 /// A colour of fewer manifolds than this is swept by one thread. In lanes a manifold costs a
 /// quarter of what it costs alone, yet a colour of 64 still takes several times what handing
 /// out its two shares does.
 inline constexpr std::size_t kThreadedLaneManifolds = 64;
 
-/// Calls `visit(first, last)` over a colour's blocks [begin, end): in shares over `threads` for a
-/// colour of kThreadedLaneManifolds or more, else at once.
+/// Calls `visit(first, last)` over a colour's blocks [begin, end): split into `threads` runs of
+/// blocks as equal as whole blocks allow for a colour of kThreadedLaneManifolds or more, else
+/// at once. A block costs about the same as any other and the threads meet at the colour's
+/// end, so equal runs keep the threads' waits short.
 template <typename Visit>
 void forEachShare(std::size_t begin, std::size_t end, std::size_t manifolds, int threads,
                   const Visit& visit)
@@ -31,10 +31,10 @@ void forEachShare(std::size_t begin, std::size_t end, std::size_t manifolds, int
         visit(begin, end);
         return;
     }
-    const std::size_t shares = (end - begin + kBlocksPerShare - 1) / kBlocksPerShare;
+    const auto shares = static_cast<std::size_t>(threads);
+    const std::size_t blocks = end - begin;
     parallelFor(shares, threads, [&](std::size_t share) {
-        const std::size_t first = begin + share * kBlocksPerShare;
-        visit(first, std::min(end, first + kBlocksPerShare));
+        visit(begin + share * blocks / shares, begin + (share + 1) * blocks / shares);
     });
 }
 

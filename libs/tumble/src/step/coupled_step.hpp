@@ -4,6 +4,7 @@
 #pragma once
 
 #include "body_slot.hpp"
+#include "collision/pair_manifold.hpp"
 #include "step/step_context.hpp"
 #include "step/step_events.hpp"
 
@@ -20,6 +21,10 @@ struct CoupledIsland {
     /// Pairs of slot indices (lower first) whose boxes swept over the step overlap: both in
     /// `bodies`, or one of them a static body.
     std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    /// Empty, or each pair's points within the narrow phase's margin over the whole step, found
+    /// by the broad phase's test (mayTouch) while the pair's geometry was at hand; valid for
+    /// the step (the soft step's narrow phase reads them instead of asking the pair again).
+    std::vector<const PairManifold*> pairManifolds;
 };
 
 /// Advances the island's bodies by dt together. Writes only the slots of `island.bodies`.

@@ -148,27 +148,46 @@ const CuboidPairGeometry& pairGeometry(std::span<BodySlot> slots, std::uint32_t 
 }
 
 bool mayTouch(std::span<BodySlot> slots, std::uint32_t slotA, std::uint32_t slotB,
-              const Vec3& gravity, Real horizon, Real tolerance, bool carry)
+              const Vec3& gravity, Real horizon, Real tolerance, bool carry,
+              PairManifold* manifold)
 {
+    // the margin of findPairContact, summed in the same order
     const Real margin = tolerance + reachOver(slots[slotA].body, gravity, horizon) +
                         reachOver(slots[slotB].body, gravity, horizon);
-    return !(pairGeometry(slots, slotA, slotB, margin, carry).largestSeparation > margin);
+    const CuboidPairGeometry& geometry = pairGeometry(slots, slotA, slotB, margin, carry);
+    const bool touches = !(geometry.largestSeparation > margin);
+    if (touches && manifold != nullptr) {
+        *manifold = manifoldWithin(geometry, margin);
+    }
+    return touches;
 }
 
 namespace {
 
-/// The contact of one of the island's pairs of bodies, if any point is within the margin.
-bool findPairContact(const CoupledIsland& island, std::span<BodySlot> slots, Real tolerance,
-                     std::span<const Real> reach, bool carry,
-                     const std::pair<std::uint32_t, std::uint32_t>& pair, IslandContact& contact)
+/// Whether the narrow phase reads the pairs' manifolds found by the broad phase's test: a step
+/// over the same horizon with carried geometry (the soft step) on an island that has them.
+bool readsFoundManifolds(const CoupledIsland& island, bool carry)
 {
-    const auto [slotA, slotB] = pair;
+    return carry && island.pairManifolds.size() == island.pairs.size() && !island.pairs.empty();
+}
+
+/// The contact of the island's pair k, if any point is within the margin.
+bool findPairContact(const CoupledIsland& island, std::span<BodySlot> slots, Real tolerance,
+                     std::span<const Real> reach, bool carry, std::size_t k,
+                     IslandContact& contact)
+{
+    const auto [slotA, slotB] = island.pairs[k];
     const Body& a = slots[slotA].body;
     const Body& b = slots[slotB].body;
     const std::uint32_t solverA = solverIndexOf(island, slotA);
     const std::uint32_t solverB = solverIndexOf(island, slotB);
-    const Real margin = tolerance + reach[solverA] + reach[solverB];
-    contact.manifold = manifoldWithin(pairGeometry(slots, slotA, slotB, margin, carry), margin);
+    if (readsFoundManifolds(island, carry)) {
+        contact.manifold = *island.pairManifolds[k];
+    } else {
+        const Real margin = tolerance + reach[solverA] + reach[solverB];
+        contact.manifold =
+            manifoldWithin(pairGeometry(slots, slotA, slotB, margin, carry), margin);
+    }
     if (contact.manifold.pointCount == 0) {
         return false;
     }
@@ -191,8 +210,9 @@ bool findPairContact(const CoupledIsland& island, std::span<BodySlot> slots, Rea
 }
 
 /// findPairContact for each pair over `threads` threads: each body's pairs go to one thread,
-/// since a pair writes the geometry its dynamic body keeps (9.11); the contacts then follow
-/// in the order of the pairs, as from one thread (11.5c).
+/// since a pair writes the geometry its dynamic body keeps (9.11), unless the manifolds were
+/// found by the broad phase (then no pair writes anything shared); `contacts` then holds the
+/// contacts in the order of the pairs, as from one thread (11.5c).
 void findPairContactsOverThreads(const CoupledIsland& island, std::span<BodySlot> slots,
                                  Real tolerance, std::span<const Real> reach, bool carry,
                                  int threads, std::vector<IslandContact>& contacts)
@@ -209,19 +229,25 @@ void findPairContactsOverThreads(const CoupledIsland& island, std::span<BodySlot
     OwnerGroups& groups = keptGroups;
     const std::size_t pairs = island.pairs.size();
     ofPair.resize(pairs);
-    ownerOf.resize(pairs);
-    parallelFor(pairs, threads, [&](std::size_t k) {
-        const auto [slotA, slotB] = island.pairs[k];
-        ownerOf[k] = solverIndexOf(island, pairGeometryOwner(slots, slotA, slotB));
-    });
-    groups.build(ownerOf, island.bodies.size());
-    found.assign(pairs, 0);
-    parallelFor(groups.count(), threads, [&](std::size_t g) {
-        for (const std::uint32_t k : groups.group(g)) {
-            found[k] = findPairContact(island, slots, tolerance, reach, carry, island.pairs[k],
-                                       ofPair[k]) ? 1 : 0;
-        }
-    });
+    found.resize(pairs);
+    const auto findContact = [&](std::size_t k) {
+        found[k] = findPairContact(island, slots, tolerance, reach, carry, k, ofPair[k]) ? 1 : 0;
+    };
+    if (readsFoundManifolds(island, carry)) {
+        parallelFor(pairs, threads, findContact);
+    } else {
+        ownerOf.resize(pairs);
+        parallelFor(pairs, threads, [&](std::size_t k) {
+            const auto [slotA, slotB] = island.pairs[k];
+            ownerOf[k] = solverIndexOf(island, pairGeometryOwner(slots, slotA, slotB));
+        });
+        groups.build(ownerOf, island.bodies.size());
+        parallelFor(groups.count(), threads, [&](std::size_t g) {
+            for (const std::uint32_t k : groups.group(g)) {
+                findContact(k);
+            }
+        });
+    }
     // each found contact to its place in the order of the pairs
     thread_local std::vector<std::uint32_t> keptPlace;
     std::vector<std::uint32_t>& place = keptPlace;
@@ -231,11 +257,12 @@ void findPairContactsOverThreads(const CoupledIsland& island, std::span<BodySlot
         place[k] = count;
         count += found[k];
     }
-    const std::size_t first = contacts.size();
-    contacts.resize(first + count);
+    // every kept entry is overwritten below: resizing without clearing first builds none of
+    // them (a serial pass over a megabyte on the pyramid)
+    contacts.resize(count);
     parallelFor(pairs, threads, [&](std::size_t k) {
         if (found[k] != 0) {
-            contacts[first + place[k]] = ofPair[k];
+            contacts[place[k]] = ofPair[k];
         }
     });
 }
@@ -246,7 +273,6 @@ void findIslandContacts(const CoupledIsland& island, std::span<BodySlot> slots,
                         const StepContext& context, Real horizon, bool carryGeometry,
                         std::vector<IslandContact>& contacts)
 {
-    contacts.clear();
     const Real tolerance = context.settings.contactTolerance;
     const std::span<const Real> reach =
         islandReach(island, slots, context.settings.gravity, horizon);
@@ -254,8 +280,9 @@ void findIslandContacts(const CoupledIsland& island, std::span<BodySlot> slots,
         findPairContactsOverThreads(island, slots, tolerance, reach, carryGeometry,
                                     context.threads, contacts);
     } else {
-        for (const auto& pair : island.pairs) {
-            if (!findPairContact(island, slots, tolerance, reach, carryGeometry, pair,
+        contacts.clear();
+        for (std::size_t k = 0; k < island.pairs.size(); ++k) {
+            if (!findPairContact(island, slots, tolerance, reach, carryGeometry, k,
                                  contacts.emplace_back())) {
                 contacts.pop_back();
             }

@@ -50,9 +50,12 @@ Material mixMaterials(const Material& dynamic, const std::optional<Material>& ot
 /// move (the speculative margin of findIslandContacts). A pair whose swept boxes overlap but that
 /// fails this has no contact point in the step, and joins no island (10.4). `slotA < slotB`; the
 /// geometry found is kept for the narrow phase (9.11); with `carry` (the soft step) it is carried
-/// within (9.12).
+/// within (9.12). Given `manifold`, a pair that may touch gets there its points within the same
+/// margin: what findIslandContacts finds for it over the same horizon, found while the pair's
+/// geometry is at hand.
 bool mayTouch(std::span<BodySlot> slots, std::uint32_t slotA, std::uint32_t slotB,
-              const Vec3& gravity, Real horizon, Real tolerance, bool carry);
+              const Vec3& gravity, Real horizon, Real tolerance, bool carry,
+              PairManifold* manifold = nullptr);
 
 /// The slot whose kept pair geometry (9.11) holds the pair (slotA < slotB): the dynamic body of
 /// the two, the lower if both are. Work on pairs goes to threads grouped by it (11.5c).

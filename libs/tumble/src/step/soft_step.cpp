@@ -24,7 +24,8 @@ namespace {
 struct SoftBuffers {
     std::vector<IslandContact> contacts;
     std::vector<Vec3> centres;
-    /// The manifolds of the overflow group, or of every contact of an island not in lanes.
+    /// The manifolds of the overflow group from its first, or of every contact of an island
+    /// not in lanes.
     std::vector<SoftManifold> manifolds;
     std::vector<SoftContactResult> results;
     SoftColours colours;
@@ -114,7 +115,7 @@ public:
     void run(Real dt);
 
 private:
-    void prepare(Real h);
+    void prepare(Real dt);
     void orderByColour();
     /// (12.3) and (12.5): contact k's manifold, started from its owner's kept impulses.
     SoftManifold manifoldOf(std::size_t k) const;
@@ -140,7 +141,7 @@ void SoftStep::run(Real dt)
 {
     const int substeps = std::max(1, m_settings.softSubsteps);
     const Real h = dt / substeps;
-    prepare(h);
+    prepare(dt);
     // (12.2): a contact spring gets at least four sub-steps a period; against static geometry
     // it is twice as stiff with half the damping ratio, the same damping coefficient 2 zeta omega
     const Real hertz = std::min(m_settings.softContactHertz, 0.25 / h);
@@ -165,7 +166,7 @@ void SoftStep::run(Real dt)
     m_events.statistics.sweeps += 2 * static_cast<std::size_t>(substeps);
 }
 
-void SoftStep::prepare(Real h)
+void SoftStep::prepare(Real dt)
 {
     const std::size_t count = m_island.bodies.size();
     // the exact step's kept constraints do not survive a soft step
@@ -185,7 +186,6 @@ void SoftStep::prepare(Real h)
         m_buffers.centres[i] = body(i).position;
     });
     // narrow phase once a step: every point the bodies can reach within it (12.1)
-    const Real dt = h * std::max(1, m_settings.softSubsteps);
     findIslandContacts(m_island, m_slots, m_context, dt, true, m_buffers.contacts);
     orderByColour();
     std::size_t points = 0;
@@ -197,9 +197,9 @@ void SoftStep::prepare(Real h)
     // built where it is packed; the overflow group (or a small island) keeps its manifolds
     m_buffers.inLanes = m_buffers.contacts.size() >= kLaneManifolds;
     const std::size_t first = firstUnpacked();
-    m_buffers.manifolds.resize(m_buffers.contacts.size());
-    parallelFor(m_buffers.contacts.size() - first, m_context.threads,
-                [&](std::size_t i) { m_buffers.manifolds[first + i] = manifoldOf(first + i); });
+    m_buffers.manifolds.resize(m_buffers.contacts.size() - first);
+    parallelFor(m_buffers.manifolds.size(), m_context.threads,
+                [&](std::size_t i) { m_buffers.manifolds[i] = manifoldOf(first + i); });
     if (m_buffers.inLanes) {
         m_buffers.lanes.pack([&](std::size_t k) { return manifoldOf(k); }, m_buffers.colours,
                              m_buffers.bodies, m_context.threads);
@@ -228,8 +228,9 @@ void SoftStep::collectResults()
     if (m_buffers.inLanes) {
         m_buffers.lanes.results(m_buffers.results, m_context.threads);
     }
-    for (std::size_t k = firstUnpacked(); k < m_buffers.contacts.size(); ++k) {
-        m_buffers.results[k] = softResultOf(m_buffers.manifolds[k]);
+    const std::size_t first = firstUnpacked();
+    for (std::size_t i = 0; i < m_buffers.manifolds.size(); ++i) {
+        m_buffers.results[first + i] = softResultOf(m_buffers.manifolds[i]);
     }
 }
 

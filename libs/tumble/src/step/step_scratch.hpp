@@ -4,6 +4,7 @@
 
 #include "collision/aabb.hpp"
 #include "collision/broad_phase.hpp"
+#include "collision/pair_manifold.hpp"
 #include "step/coupled_step.hpp"
 #include "step/owner_groups.hpp"
 #include "step/step_events.hpp"
@@ -23,8 +24,11 @@ struct StepScratch {
     std::vector<std::uint8_t> pairTouches;
     std::vector<std::uint32_t> pairOwners;
     OwnerGroups pairGroups;
-    /// The broad phase's pairs that may touch, as slot indices.
+    /// With the soft step, each pair's points within the narrow phase's margin (mayTouch).
+    std::vector<PairManifold> pairManifolds;
+    /// The broad phase's pairs that may touch, as slot indices, and each one's pair index.
     std::vector<ProxyPair> links;
+    std::vector<std::uint32_t> linkPairs;
     /// 1 for a live dynamic body, awake or asleep: islands are built over all of them.
     std::vector<std::uint8_t> dynamic;
     std::vector<CoupledIsland> islands;
