@@ -26,6 +26,29 @@ void parallelFor(std::size_t count, [[maybe_unused]] int threads, const Body& bo
     }
 }
 
+/// parallelFor for iterations of unequal cost: `chunk` iterations at a time go to whichever
+/// thread is free. Each call must write only what no other call reads or writes, so the result
+/// is the same for any number of threads and any hand-out (11.5c).
+template <typename Body>
+void parallelForBalanced(std::size_t count, [[maybe_unused]] int threads,
+                         [[maybe_unused]] std::size_t chunk, const Body& body)
+{
+#ifdef TUMBLE_HAVE_OPENMP
+    if (threads > 1 && count > 1) {
+        const auto signedCount = static_cast<std::ptrdiff_t>(count);
+        const auto signedChunk = static_cast<int>(chunk);
+#pragma omp parallel for schedule(dynamic, signedChunk) num_threads(threads)
+        for (std::ptrdiff_t i = 0; i < signedCount; ++i) {
+            body(static_cast<std::size_t>(i));
+        }
+        return;
+    }
+#endif
+    for (std::size_t i = 0; i < count; ++i) {
+        body(i);
+    }
+}
+
 /// Whether `holds(i)` for some i in [0, count), each i tested on one of `threads` threads in a
 /// static schedule when threads > 1. The answer does not depend on the number of threads.
 template <typename Predicate>

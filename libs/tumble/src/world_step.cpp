@@ -26,6 +26,13 @@ namespace {
 /// four a face contact) is large: it takes all the threads inside its step. The broad phase's
 /// touch test takes the threads from as many pairs.
 constexpr std::size_t kLargeIslandPairs = 256;
+/// A world of at least this many slots finds its bodies' boxes and forgets its pairs gone over
+/// the threads.
+constexpr std::size_t kLargeWorldSlots = 1024;
+/// Bodies whose pairs a thread takes at a time in the touch test: a pair whose geometry is
+/// carried or searched costs many times one whose geometry is kept, and the bodies that moved
+/// lie together (the lower layers of a pile, what just landed).
+constexpr std::size_t kPairOwnersPerChunk = 16;
 
 /// A bound on the angular speed over a torque-free step: |w| <= |L| / I_min <= |w0| I_max / I_min
 /// (the swept box of (10.3) needs one for the whole step).
@@ -54,23 +61,31 @@ void World::findPairs(detail::StepScratch& scratch, Real dt)
 {
     scratch.proxies.clear();
     scratch.sweptBoxes.assign(m_slots.size(), Aabb{});
+    scratch.reach.assign(m_slots.size(), 0.0);
     const Real margin = m_settings.contactTolerance;
-    for (std::uint32_t index = 0; index < m_slots.size(); ++index) {
+    const int slotThreads = m_slots.size() >= kLargeWorldSlots ? threadCount() : 1;
+    // each slot writes only its own box and reach
+    parallelFor(m_slots.size(), slotThreads, [&](std::size_t index) {
         const BodySlot& slot = m_slots[index];
         if (!slot.alive) {
-            continue;
+            return;
         }
         const Body& body = slot.body;
         const Transform pose{body.position, body.orientation};
         // a sleeping body does not move, but pairs like any dynamic body: its island wakes
         // with it (7.4)
         const bool moving = !body.isStatic() && !body.asleep;
-        const Aabb box = moving ? sweptCuboidAabb(pose, body.shape.halfExtents(),
-                                                  body.linearVelocity, m_settings.gravity,
-                                                  angularSpeedBound(body), dt, margin)
-                                : expanded(cuboidAabb(pose, body.shape.halfExtents()), margin);
-        scratch.sweptBoxes[index] = box;
-        scratch.proxies.push_back(BroadPhaseProxy{box, index, !body.isStatic()});
+        scratch.sweptBoxes[index] =
+            moving ? sweptCuboidAabb(pose, body.shape.halfExtents(), body.linearVelocity,
+                                     m_settings.gravity, angularSpeedBound(body), dt, margin)
+                   : expanded(cuboidAabb(pose, body.shape.halfExtents()), margin);
+        scratch.reach[index] = reachOver(body, m_settings.gravity, dt);
+    });
+    for (std::uint32_t index = 0; index < m_slots.size(); ++index) {
+        if (m_slots[index].alive) {
+            scratch.proxies.push_back(BroadPhaseProxy{scratch.sweptBoxes[index], index,
+                                                      !m_slots[index].body.isStatic()});
+        }
     }
     scratch.broadPhase.update(scratch.proxies, threadCount());
     // narrow phase's first test: boxes that cannot touch within the step link nothing, and a
@@ -85,8 +100,10 @@ void World::findPairs(detail::StepScratch& scratch, Real dt)
         const std::uint32_t a = scratch.proxies[pairs[k].a].body;
         const std::uint32_t b = scratch.proxies[pairs[k].b].body;
         PairManifold* manifold = carry ? &scratch.pairManifolds[k] : nullptr;
-        scratch.pairTouches[k] = mayTouch(m_slots, std::min(a, b), std::max(a, b),
-                                          m_settings.gravity, dt, margin, carry, manifold) ? 1 : 0;
+        const std::uint32_t lower = std::min(a, b);
+        const std::uint32_t upper = std::max(a, b);
+        scratch.pairTouches[k] = mayTouch(m_slots, lower, upper, margin, scratch.reach[lower],
+                                          scratch.reach[upper], carry, manifold) ? 1 : 0;
     };
     const int threads = pairs.size() >= kLargeIslandPairs ? threadCount() : 1;
     if (threads > 1) {
@@ -100,7 +117,7 @@ void World::findPairs(detail::StepScratch& scratch, Real dt)
         }
         scratch.pairGroups.build(scratch.pairOwners, m_slots.size());
         const OwnerGroups& groups = scratch.pairGroups;
-        parallelFor(groups.count(), threads, [&](std::size_t g) {
+        parallelForBalanced(groups.count(), threads, kPairOwnersPerChunk, [&](std::size_t g) {
             for (const std::uint32_t k : groups.group(g)) {
                 testPair(k);
             }
@@ -120,9 +137,8 @@ void World::findPairs(detail::StepScratch& scratch, Real dt)
         }
     }
     // (9.11): kept geometry nobody asked for since the last broad phase is of a pair gone
-    for (BodySlot& slot : m_slots) {
-        slot.pairGeometry.forgetUnasked();
-    }
+    parallelFor(m_slots.size(), slotThreads,
+                [&](std::size_t index) { m_slots[index].pairGeometry.forgetUnasked(); });
 }
 
 void World::buildStepIslands(detail::StepScratch& scratch, Real dt)

@@ -25,18 +25,6 @@ std::uint32_t solverIndexOf(const CoupledIsland& island, std::uint32_t slot)
     return static_cast<std::uint32_t>(island.bodies.size());
 }
 
-/// How far any point of the body can move over `horizon` seconds: the centre's speed, the
-/// rotation's reach at the half diagonal and gravity's drift (a bound, as in (4.7)).
-Real reachOver(const Body& body, const Vec3& gravity, Real horizon)
-{
-    if (body.isStatic()) {
-        return 0.0;
-    }
-    const Real radius = glm::length(body.shape.halfExtents());
-    return horizon * (glm::length(body.linearVelocity) + glm::length(body.angularVelocity) * radius +
-                      glm::length(gravity) * horizon);
-}
-
 /// reachOver of each of the island's bodies, then 0 for the static side; one vector per thread,
 /// kept from step to step.
 std::span<const Real> islandReach(const CoupledIsland& island, std::span<const BodySlot> slots,
@@ -121,6 +109,17 @@ void addHalfSpaceContacts(const CoupledIsland& island, std::span<const BodySlot>
 
 } // namespace
 
+Real reachOver(const Body& body, const Vec3& gravity, Real horizon)
+{
+    if (body.isStatic()) {
+        return 0.0;
+    }
+    const Real radius = glm::length(body.shape.halfExtents());
+    return horizon * (glm::length(body.linearVelocity) + glm::length(body.angularVelocity) * radius +
+                      glm::length(gravity) * horizon);
+}
+
+
 Material mixMaterials(const Material& dynamic, const std::optional<Material>& other)
 {
     if (!other) {
@@ -148,12 +147,10 @@ const CuboidPairGeometry& pairGeometry(std::span<BodySlot> slots, std::uint32_t 
 }
 
 bool mayTouch(std::span<BodySlot> slots, std::uint32_t slotA, std::uint32_t slotB,
-              const Vec3& gravity, Real horizon, Real tolerance, bool carry,
-              PairManifold* manifold)
+              Real tolerance, Real reachA, Real reachB, bool carry, PairManifold* manifold)
 {
     // the margin of findPairContact, summed in the same order
-    const Real margin = tolerance + reachOver(slots[slotA].body, gravity, horizon) +
-                        reachOver(slots[slotB].body, gravity, horizon);
+    const Real margin = tolerance + reachA + reachB;
     const CuboidPairGeometry& geometry = pairGeometry(slots, slotA, slotB, margin, carry);
     const bool touches = !(geometry.largestSeparation > margin);
     if (touches && manifold != nullptr) {

@@ -45,16 +45,22 @@ inline SolverBody solverBodyOf(const Body& body)
 /// else the larger restitution and the geometric means of the friction coefficients.
 Material mixMaterials(const Material& dynamic, const std::optional<Material>& other);
 
-/// Whether two bodies can come within the contact tolerance of each other over `horizon`
-/// seconds: no separating axis (9.2) parts them by more than the tolerance plus how far each can
-/// move (the speculative margin of findIslandContacts). A pair whose swept boxes overlap but that
+/// How far any point of the body can move over `horizon` seconds: the centre's speed, the
+/// rotation's reach at the half diagonal and gravity's drift (a bound, as in (4.7)); 0 for a
+/// static body.
+Real reachOver(const Body& body, const Vec3& gravity, Real horizon);
+
+/// Whether two bodies can come within the contact tolerance of each other over a horizon:
+/// no separating axis (9.2) parts them by more than the tolerance plus how far each can move
+/// (`reachA`, `reachB`: reachOver over the horizon; the speculative margin of
+/// findIslandContacts). A pair whose swept boxes overlap but that
 /// fails this has no contact point in the step, and joins no island (10.4). `slotA < slotB`; the
 /// geometry found is kept for the narrow phase (9.11); with `carry` (the soft step) it is carried
 /// within (9.12). Given `manifold`, a pair that may touch gets there its points within the same
 /// margin: what findIslandContacts finds for it over the same horizon, found while the pair's
 /// geometry is at hand.
 bool mayTouch(std::span<BodySlot> slots, std::uint32_t slotA, std::uint32_t slotB,
-              const Vec3& gravity, Real horizon, Real tolerance, bool carry,
+              Real tolerance, Real reachA, Real reachB, bool carry,
               PairManifold* manifold = nullptr);
 
 /// The slot whose kept pair geometry (9.11) holds the pair (slotA < slotB): the dynamic body of
