@@ -39,6 +39,9 @@ std::span<const Real> islandReach(const CoupledIsland& island, std::span<const B
     return reach;
 }
 
+/// Bodies a thread takes at a time in the half-space tests.
+constexpr std::size_t kHalfSpaceBodiesPerChunk = 64;
+
 void setMaterial(IslandContact& contact, const Material& material)
 {
     contact.restitution = material.restitution;
@@ -65,7 +68,9 @@ void addHalfSpaceContacts(const CoupledIsland& island, std::span<const BodySlot>
     std::vector<std::uint8_t>& touches = keptTouches;
     found.resize(island.bodies.size() * sides);
     touches.assign(found.size(), 0);
-    parallelFor(island.bodies.size(), threads, [&](std::size_t index) {
+    // the bodies near a half-space (a pile's lowest layer) lie together in the island's order
+    parallelForBalanced(island.bodies.size(), threads, kHalfSpaceBodiesPerChunk,
+                        [&](std::size_t index) {
         const auto local = static_cast<std::uint32_t>(index);
         const Body& body = slots[island.bodies[local]].body;
         const Transform pose{body.position, body.orientation};

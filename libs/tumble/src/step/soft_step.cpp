@@ -33,7 +33,9 @@ struct SoftBuffers {
     /// Whether this step's colours are packed in `lanes`.
     bool inLanes = false;
     std::vector<IslandContact> spareContacts;
+    /// Each contact's two solver bodies: in the narrow phase's order, then in colour order.
     std::vector<ProxyPair> ends;
+    std::vector<ProxyPair> colourEnds;
     std::vector<std::uint8_t> isStatic;
     std::vector<SoftBody> bodies;
     std::vector<Real> energies;
@@ -176,7 +178,9 @@ void SoftStep::prepare(Real dt)
     m_buffers.energies.resize(count);
     m_buffers.kineticStart.resize(count);
     m_buffers.bodyWork.assign(count, 0.0);
-    m_buffers.bodies.assign(count + 1, SoftBody{});
+    // the loop below writes every dynamic body whole; the static body is the last
+    m_buffers.bodies.resize(count + 1);
+    m_buffers.bodies[count] = SoftBody{};
     m_buffers.centres.resize(count);
     // each body, each manifold and each kept impulse below writes only its own entry
     parallelFor(count, m_context.threads, [&](std::size_t i) {
@@ -241,16 +245,18 @@ void SoftStep::orderByColour()
     const std::size_t count = m_island.bodies.size();
     const std::vector<IslandContact>& contacts = m_buffers.contacts;
     m_buffers.ends.resize(contacts.size());
-    for (std::size_t k = 0; k < contacts.size(); ++k) {
+    parallelFor(contacts.size(), m_context.threads, [&](std::size_t k) {
         m_buffers.ends[k] = ProxyPair{contacts[k].solverA, contacts[k].solverB};
-    }
+    });
     m_buffers.isStatic.assign(count + 1, 0);
     m_buffers.isStatic[count] = 1;
     const ConstraintColours colours =
         colourConstraints(m_buffers.ends, m_buffers.isStatic, kMaxConstraintColours);
     m_buffers.spareContacts.resize(contacts.size());
+    m_buffers.colourEnds.resize(contacts.size());
     parallelFor(contacts.size(), m_context.threads, [&](std::size_t k) {
         m_buffers.spareContacts[k] = contacts[colours.constraints[k]];
+        m_buffers.colourEnds[k] = m_buffers.ends[colours.constraints[k]];
     });
     std::swap(m_buffers.contacts, m_buffers.spareContacts);
     m_buffers.colours.offsets = colours.offsets;
@@ -340,8 +346,7 @@ void SoftStep::finish()
         if (!pushed) {
             continue;
         }
-        for (const std::uint32_t side : {m_buffers.contacts[c].solverA,
-                                         m_buffers.contacts[c].solverB}) {
+        for (const std::uint32_t side : {m_buffers.colourEnds[c].a, m_buffers.colourEnds[c].b}) {
             if (side < count) {
                 m_slots[m_island.bodies[side]].touchingGround = true;
             }
