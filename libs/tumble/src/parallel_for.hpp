@@ -3,6 +3,10 @@
 
 #include <cstddef>
 
+#ifdef TUMBLE_HAVE_OPENMP
+#include <omp.h>
+#endif
+
 namespace tumble {
 
 /// Calls `body(i)` for each i in [0, count), over `threads` threads in a static schedule when
@@ -46,6 +50,34 @@ void parallelForBalanced(std::size_t count, [[maybe_unused]] int threads,
 #endif
     for (std::size_t i = 0; i < count; ++i) {
         body(i);
+    }
+}
+
+/// Calls `body(phase, share, shares)` for each phase in [0, phases), in order, on each of
+/// `threads` threads (`share` the thread's index among the `shares` that run), every thread
+/// ending a phase before any begins the next: one parallel region for all the phases and a
+/// barrier between them, where a region per phase would start the threads again each time.
+/// With one thread, body(phase, 0, 1) for each phase. What a phase writes must not depend on
+/// how its work is shared for the result to be the same for any number of threads (11.5c).
+template <typename Body>
+void parallelPhases(std::size_t phases, [[maybe_unused]] int threads, const Body& body)
+{
+#ifdef TUMBLE_HAVE_OPENMP
+    if (threads > 1 && phases > 0) {
+#pragma omp parallel num_threads(threads)
+        {
+            const auto share = static_cast<std::size_t>(omp_get_thread_num());
+            const auto shares = static_cast<std::size_t>(omp_get_num_threads());
+            for (std::size_t phase = 0; phase < phases; ++phase) {
+                body(phase, share, shares);
+#pragma omp barrier
+            }
+        }
+        return;
+    }
+#endif
+    for (std::size_t phase = 0; phase < phases; ++phase) {
+        body(phase, std::size_t{0}, std::size_t{1});
     }
 }
 

@@ -16,8 +16,8 @@ namespace {
 constexpr int kRestitutionSweeps = 4;
 /// Calls `visit(i)` for every manifold in colour order: each colour's manifolds move no dynamic
 /// body twice, so a large colour is split over `threads` and the result is the same for any
-/// count (11.5c); the overflow group goes in order on one thread. With `lanes`, a colour is
-/// handed to `inLanes(c)` instead, and `visit(i)` is given the overflow's i-th manifold.
+/// count (11.5c); the overflow group goes in order on one thread. With `lanes`, the colours are
+/// handed to `inLanes()` instead, and `visit(i)` is given the overflow's i-th manifold.
 template <typename Visit, typename InLanes>
 void forEachManifold(std::size_t count, const SoftColours& colours, int threads,
                      const Visit& visit, const SoftLanes* lanes, const InLanes& inLanes)
@@ -30,14 +30,13 @@ void forEachManifold(std::size_t count, const SoftColours& colours, int threads,
     }
     const std::size_t groups = colours.offsets.size() - 1;
     const std::size_t base = lanes != nullptr ? colours.offsets[groups - 1] : 0;
-    for (std::size_t c = 0; c < groups; ++c) {
+    if (lanes != nullptr) {
+        inLanes();
+    }
+    for (std::size_t c = lanes != nullptr ? groups - 1 : 0; c < groups; ++c) {
         const std::size_t first = colours.offsets[c];
         const std::size_t size = colours.offsets[c + 1] - first;
         const bool overflow = c + 1 == groups;
-        if (lanes != nullptr && !overflow) {
-            inLanes(c);
-            continue;
-        }
         const int used = !overflow && size >= kThreadedColourManifolds ? threads : 1;
         parallelFor(size, used, [&](std::size_t i) { visit(first - base + i); });
     }
@@ -271,7 +270,7 @@ void prepareSoftRows(SoftManifold& m, std::span<const SoftBody> bodies)
 void warmStartSoft(std::span<const SoftManifold> manifolds, std::span<SoftBody> bodies,
                    const SoftColours& colours, int threads, SoftLanes* lanes)
 {
-    const auto inLanes = [&](std::size_t c) { lanes->warmStart(c, bodies, threads); };
+    const auto inLanes = [&] { lanes->warmStart(bodies, threads); };
     forEachManifold(manifolds.size(), colours, threads, [&](std::size_t index) {
         const SoftManifold& m = manifolds[index];
         SoftPair pair(bodies[m.bodyA], bodies[m.bodyB]);
@@ -289,9 +288,7 @@ void solveSoft(std::span<SoftManifold> manifolds, std::span<SoftBody> bodies,
                const SoftSolveSettings& settings, bool useBias, const SoftColours& colours,
                int threads, SoftLanes* lanes)
 {
-    const auto inLanes = [&](std::size_t c) {
-        lanes->solve(c, bodies, settings, useBias, threads);
-    };
+    const auto inLanes = [&] { lanes->solve(bodies, settings, useBias, threads); };
     forEachManifold(manifolds.size(), colours, threads, [&](std::size_t index) {
         SoftManifold& m = manifolds[index];
         SoftPair pair(bodies[m.bodyA], bodies[m.bodyB]);
@@ -342,7 +339,7 @@ void restituteManifold(SoftManifold& m, std::span<SoftBody> bodies, Real thresho
 void restituteSoft(std::span<SoftManifold> manifolds, std::span<SoftBody> bodies, Real threshold,
                    const SoftColours& colours, int threads, SoftLanes* lanes)
 {
-    const auto inLanes = [&](std::size_t c) { lanes->restitute(c, bodies, threshold, threads); };
+    const auto inLanes = [&] { lanes->restitute(bodies, threshold, threads); };
     forEachManifold(manifolds.size(), colours, threads, [&](std::size_t index) {
         if (manifolds[index].restitution != 0.0) {
             restituteManifold(manifolds[index], bodies, threshold);

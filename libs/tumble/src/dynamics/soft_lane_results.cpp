@@ -69,16 +69,12 @@ void restituteBlocks(std::span<LaneBlock> blocks, std::span<SoftBody> bodies, Re
 
 } // namespace
 
-void SoftLanes::restitute(std::size_t colour, std::span<SoftBody> bodies, Real threshold,
-                          int threads)
+void SoftLanes::restitute(std::span<SoftBody> bodies, Real threshold, int threads)
 {
     Storage& storage = *m_storage;
-    forEachShare(storage.colourBlocks[colour], storage.colourBlocks[colour + 1],
-                 storage.colourManifolds[colour], threads,
-                 [&](std::size_t first, std::size_t last) {
-                     restituteBlocks({storage.blocks.data() + first, last - first}, bodies,
-                                     threshold);
-                 });
+    forEachColour(storage, threads, [&](std::size_t first, std::size_t last) {
+        restituteBlocks({storage.blocks.data() + first, last - first}, bodies, threshold);
+    });
 }
 
 void SoftLanes::results(std::span<SoftContactResult> results, int threads) const

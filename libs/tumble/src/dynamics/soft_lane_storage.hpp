@@ -19,25 +19,6 @@ namespace soft_rows {
 /// out its two shares does.
 inline constexpr std::size_t kThreadedLaneManifolds = 64;
 
-/// Calls `visit(first, last)` over a colour's blocks [begin, end): split into `threads` runs of
-/// blocks as equal as whole blocks allow for a colour of kThreadedLaneManifolds or more, else
-/// at once. A block costs about the same as any other and the threads meet at the colour's
-/// end, so equal runs keep the threads' waits short.
-template <typename Visit>
-void forEachShare(std::size_t begin, std::size_t end, std::size_t manifolds, int threads,
-                  const Visit& visit)
-{
-    if (manifolds < kThreadedLaneManifolds || threads < 2) {
-        visit(begin, end);
-        return;
-    }
-    const auto shares = static_cast<std::size_t>(threads);
-    const std::size_t blocks = end - begin;
-    parallelFor(shares, threads, [&](std::size_t share) {
-        visit(begin + share * blocks / shares, begin + (share + 1) * blocks / shares);
-    });
-}
-
 } // namespace soft_rows
 
 struct SoftLanes::Storage {
@@ -48,6 +29,35 @@ struct SoftLanes::Storage {
     /// Each block's first manifold and the lanes it fills.
     std::vector<std::uint32_t> firstManifold;
     std::vector<std::uint32_t> laneCount;
+    /// Whether some colour has kThreadedLaneManifolds or more.
+    bool anyThreadedColour = false;
 };
+
+namespace soft_rows {
+
+/// Calls `visit(first, last)` over the blocks of every colour, colour after colour, over
+/// `threads`: a colour of kThreadedLaneManifolds or more split into one run of blocks a thread,
+/// as equal as whole blocks allow (the blocks cost alike and the threads meet at the colour's
+/// end), a smaller one on the first thread whole.
+template <typename Storage, typename Visit>
+void forEachColour(const Storage& storage, int threads, const Visit& visit)
+{
+    const int used = storage.anyThreadedColour ? threads : 1;
+    parallelPhases(storage.colourManifolds.size(), used,
+                   [&](std::size_t colour, std::size_t share, std::size_t shares) {
+        const std::size_t begin = storage.colourBlocks[colour];
+        const std::size_t end = storage.colourBlocks[colour + 1];
+        if (storage.colourManifolds[colour] < kThreadedLaneManifolds || shares == 1) {
+            if (share == 0) {
+                visit(begin, end);
+            }
+            return;
+        }
+        const std::size_t blocks = end - begin;
+        visit(begin + share * blocks / shares, begin + (share + 1) * blocks / shares);
+    });
+}
+
+} // namespace soft_rows
 
 } // namespace tumble

@@ -143,6 +143,7 @@ void SoftLanes::pack(const ManifoldSource& source, const SoftColours& colours,
     Storage& storage = *m_storage;
     storage.colourBlocks.assign(1, 0);
     storage.colourManifolds.clear();
+    storage.anyThreadedColour = false;
     const std::size_t groups = colours.offsets.empty() ? 0 : colours.offsets.size() - 1;
     // every group but the last (the overflow) is a colour
     std::size_t blockCount = 0;
@@ -151,6 +152,8 @@ void SoftLanes::pack(const ManifoldSource& source, const SoftColours& colours,
         blockCount += (size + kLanes - 1) / kLanes;
         storage.colourBlocks.push_back(blockCount);
         storage.colourManifolds.push_back(size);
+        storage.anyThreadedColour =
+            storage.anyThreadedColour || size >= kThreadedLaneManifolds;
     }
     const auto staticIndex = static_cast<std::uint32_t>(bodies.size() - 1);
     storage.blocks.resize(blockCount);
@@ -182,18 +185,16 @@ void SoftLanes::pack(const ManifoldSource& source, const SoftColours& colours,
     });
 }
 
-void SoftLanes::warmStart(std::size_t colour, std::span<SoftBody> bodies, int threads) const
+void SoftLanes::warmStart(std::span<SoftBody> bodies, int threads) const
 {
     const Storage& storage = *m_storage;
-    forEachShare(storage.colourBlocks[colour], storage.colourBlocks[colour + 1],
-                 storage.colourManifolds[colour], threads,
-                 [&](std::size_t first, std::size_t last) {
-                     warmStartBlocks({storage.blocks.data() + first, last - first}, bodies);
-                 });
+    forEachColour(storage, threads, [&](std::size_t first, std::size_t last) {
+        warmStartBlocks({storage.blocks.data() + first, last - first}, bodies);
+    });
 }
 
-void SoftLanes::solve(std::size_t colour, std::span<SoftBody> bodies,
-                      const SoftSolveSettings& settings, bool useBias, int threads)
+void SoftLanes::solve(std::span<SoftBody> bodies, const SoftSolveSettings& settings,
+                      bool useBias, int threads)
 {
     Storage& storage = *m_storage;
     const Softness& fixed = settings.staticSoftness;
@@ -203,11 +204,9 @@ void SoftLanes::solve(std::size_t colour, std::span<SoftBody> bodies,
                              splat(moving.massScale),      splat(moving.impulseScale),
                              splat(settings.inverseSubstep), splat(-settings.pushSpeed),
                              useBias};
-    forEachShare(storage.colourBlocks[colour], storage.colourBlocks[colour + 1],
-                 storage.colourManifolds[colour], threads,
-                 [&](std::size_t first, std::size_t last) {
-                     solveBlocks({storage.blocks.data() + first, last - first}, bodies, lanes);
-                 });
+    forEachColour(storage, threads, [&](std::size_t first, std::size_t last) {
+        solveBlocks({storage.blocks.data() + first, last - first}, bodies, lanes);
+    });
 }
 
 } // namespace tumble

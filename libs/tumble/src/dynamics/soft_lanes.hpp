@@ -34,18 +34,19 @@ public:
     void pack(std::span<const SoftManifold> manifolds, const SoftColours& colours,
               std::span<const SoftBody> bodies, int threads);
 
-    /// warmStartSoft over colour `colour`'s manifolds, on `threads` if the colour is large.
-    void warmStart(std::size_t colour, std::span<SoftBody> bodies, int threads) const;
+    /// warmStartSoft over the colours' manifolds, colour after colour, a large colour shared
+    /// over `threads`.
+    void warmStart(std::span<SoftBody> bodies, int threads) const;
 
-    /// solveSoft over colour `colour`'s manifolds, bit for bit: each lane rounds as the
+    /// solveSoft over the colours' manifolds, bit for bit: each lane rounds as the
     /// one-manifold pass does (no fused operations), and a colour's manifolds move disjoint
     /// bodies.
-    void solve(std::size_t colour, std::span<SoftBody> bodies, const SoftSolveSettings& settings,
-               bool useBias, int threads);
+    void solve(std::span<SoftBody> bodies, const SoftSolveSettings& settings, bool useBias,
+               int threads);
 
-    /// restituteSoft over colour `colour`'s manifolds: each lane of elasticity other than zero
+    /// restituteSoft over the colours' manifolds: each lane of elasticity other than zero
     /// through restituteManifold, so the bits are those of the manifold alone.
-    void restitute(std::size_t colour, std::span<SoftBody> bodies, Real threshold, int threads);
+    void restitute(std::span<SoftBody> bodies, Real threshold, int threads);
 
     /// Writes the impulses and work back to the manifolds packed, the blocks over `threads`.
     void unpack(std::span<SoftManifold> manifolds, int threads) const;
