@@ -61,10 +61,9 @@ void World::findPairs(detail::StepScratch& scratch, Real dt)
 {
     scratch.proxies.clear();
     scratch.sweptBoxes.assign(m_slots.size(), Aabb{});
-    scratch.reach.assign(m_slots.size(), 0.0);
     const Real margin = m_settings.contactTolerance;
     const int slotThreads = m_slots.size() >= kLargeWorldSlots ? threadCount() : 1;
-    // each slot writes only its own box and reach
+    // each slot writes only its own box
     parallelFor(m_slots.size(), slotThreads, [&](std::size_t index) {
         const BodySlot& slot = m_slots[index];
         if (!slot.alive) {
@@ -79,7 +78,6 @@ void World::findPairs(detail::StepScratch& scratch, Real dt)
             moving ? sweptCuboidAabb(pose, body.shape.halfExtents(), body.linearVelocity,
                                      m_settings.gravity, angularSpeedBound(body), dt, margin)
                    : expanded(cuboidAabb(pose, body.shape.halfExtents()), margin);
-        scratch.reach[index] = reachOver(body, m_settings.gravity, dt);
     });
     for (std::uint32_t index = 0; index < m_slots.size(); ++index) {
         if (m_slots[index].alive) {
@@ -102,8 +100,13 @@ void World::findPairs(detail::StepScratch& scratch, Real dt)
         PairManifold* manifold = carry ? &scratch.pairManifolds[k] : nullptr;
         const std::uint32_t lower = std::min(a, b);
         const std::uint32_t upper = std::max(a, b);
-        scratch.pairTouches[k] = mayTouch(m_slots, lower, upper, margin, scratch.reach[lower],
-                                          scratch.reach[upper], carry, manifold) ? 1 : 0;
+        // each side's reach found here, not for every body: most bodies of a scene of bodies
+        // alone pair with none
+        const Real reachLower = reachOver(m_slots[lower].body, m_settings.gravity, dt);
+        const Real reachUpper = reachOver(m_slots[upper].body, m_settings.gravity, dt);
+        scratch.pairTouches[k] =
+            mayTouch(m_slots, lower, upper, margin, reachLower, reachUpper, carry, manifold) ? 1
+                                                                                            : 0;
     };
     const int threads = pairs.size() >= kLargeIslandPairs ? threadCount() : 1;
     if (threads > 1) {

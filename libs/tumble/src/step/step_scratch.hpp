@@ -16,10 +16,8 @@ namespace tumble::detail {
 
 struct StepScratch {
     std::vector<BroadPhaseProxy> proxies;
-    /// The box of each slot over the step (empty for a dead slot), and how far its body can
-    /// move within the step (reachOver).
+    /// The box of each slot over the step (empty for a dead slot).
     std::vector<Aabb> sweptBoxes;
-    std::vector<Real> reach;
     BroadPhase broadPhase;
     /// Whether each of the broad phase's pairs may touch within the step (10.4), and the body
     /// whose kept geometry it writes, grouped for the threads (11.5c).
