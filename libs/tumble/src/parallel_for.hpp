@@ -1,6 +1,8 @@
 // Loops whose iterations write disjoint state, spread over threads (OpenMP where built with it).
 #pragma once
 
+#include <algorithm>
+#include <atomic>
 #include <cstddef>
 
 #ifdef TUMBLE_HAVE_OPENMP
@@ -34,23 +36,19 @@ void parallelFor(std::size_t count, [[maybe_unused]] int threads, const Body& bo
 /// thread is free. Each call must write only what no other call reads or writes, so the result
 /// is the same for any number of threads and any hand-out (11.5c).
 template <typename Body>
-void parallelForBalanced(std::size_t count, [[maybe_unused]] int threads,
-                         [[maybe_unused]] std::size_t chunk, const Body& body)
+void parallelForBalanced(std::size_t count, int threads, std::size_t chunk, const Body& body)
 {
-#ifdef TUMBLE_HAVE_OPENMP
-    if (threads > 1 && count > 1) {
-        const auto signedCount = static_cast<std::ptrdiff_t>(count);
-        const auto signedChunk = static_cast<int>(chunk);
-#pragma omp parallel for schedule(dynamic, signedChunk) num_threads(threads)
-        for (std::ptrdiff_t i = 0; i < signedCount; ++i) {
-            body(static_cast<std::size_t>(i));
+    const std::size_t chunks = (count + chunk - 1) / chunk;
+    std::atomic<std::size_t> next{0};
+    // one call a thread, each taking the next chunk until none is left
+    parallelFor(static_cast<std::size_t>(std::max(threads, 1)), threads, [&](std::size_t) {
+        for (std::size_t c = next++; c < chunks; c = next++) {
+            const std::size_t last = std::min(count, (c + 1) * chunk);
+            for (std::size_t i = c * chunk; i < last; ++i) {
+                body(i);
+            }
         }
-        return;
-    }
-#endif
-    for (std::size_t i = 0; i < count; ++i) {
-        body(i);
-    }
+    });
 }
 
 /// Calls `body(phase, share, shares)` for each phase in [0, phases), in order, on each of
