@@ -8,6 +8,7 @@
 #include "parallel_for.hpp"
 #include "step/arrivals.hpp"
 #include "step/contact_colour_order.hpp"
+#include "step/island_constraints.hpp"
 #include "step/island_contacts.hpp"
 #include "step/island_events.hpp"
 #include "step/island_motion.hpp"

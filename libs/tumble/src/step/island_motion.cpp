@@ -6,6 +6,7 @@
 #include "dynamics/island_solver.hpp"
 #include "dynamics/point_impulses.hpp"
 #include "parallel_for.hpp"
+#include "step/island_constraints.hpp"
 #include "step/owner_groups.hpp"
 #include "step/resting_load_guess.hpp"
 

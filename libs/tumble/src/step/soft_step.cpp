@@ -10,6 +10,7 @@
 #include "dynamics/soft_lanes.hpp"
 #include "dynamics/solver_point.hpp"
 #include "step/island_contacts.hpp"
+#include "step/soft_manifolds.hpp"
 #include "step/soft_warm_start.hpp"
 #include "parallel_for.hpp"
 
@@ -54,56 +55,6 @@ SoftBuffers& threadBuffers()
 /// An island of fewer manifolds sweeps them one at a time: most lanes of its colours' blocks
 /// would be empty.
 constexpr std::size_t kLaneManifolds = 32;
-
-SoftBody softBodyOf(const Body& body)
-{
-    SoftBody soft;
-    soft.linearVelocity = body.linearVelocity;
-    soft.angularVelocity = body.angularVelocity;
-    soft.orientation = body.orientation;
-    soft.invMass = body.invMass;
-    soft.invInertia = body.invInertiaWorld;
-    return soft;
-}
-
-/// (12.3): the manifold of a contact at the bodies' poses now: anchors from each dynamic centre of
-/// mass (a static side never moves, so its anchors are zero), the gaps, the normal rows and
-/// the friction at the centre; impulses zero.
-SoftManifold softManifoldOf(const IslandContact& contact, std::span<const SoftBody> bodies,
-                            std::span<const Vec3> centres, std::size_t staticIndex)
-{
-    SoftManifold m;
-    m.bodyA = contact.solverA;
-    m.bodyB = contact.solverB;
-    m.pointCount = contact.manifold.pointCount;
-    m.againstStatic = m.bodyA == staticIndex || m.bodyB == staticIndex;
-    m.normal = contact.manifold.normal;
-    orthonormalBasis(m.normal, m.tangent1, m.tangent2);
-    m.restitution = contact.restitution;
-    const SoftBody& a = bodies[m.bodyA];
-    const SoftBody& b = bodies[m.bodyB];
-    const auto anchor = [&](std::uint32_t side, const Vec3& point) {
-        return side == staticIndex ? Vec3(0.0) : point - centres[side];
-    };
-    for (int k = 0; k < m.pointCount; ++k) {
-        const PairContactPoint& point = contact.manifold.points[k];
-        SoftPoint& p = m.points[k];
-        p.anchorA = anchor(m.bodyA, point.position);
-        p.anchorB = anchor(m.bodyB, point.position);
-        p.baseSeparation = point.separation - glm::dot(m.normal, p.anchorB - p.anchorA);
-        const Vec3 velocity = b.linearVelocity + glm::cross(b.angularVelocity, p.anchorB) -
-                              a.linearVelocity - glm::cross(a.angularVelocity, p.anchorA);
-        p.relativeVelocity = glm::dot(m.normal, velocity);
-    }
-    prepareSoftRows(m, bodies);
-    // (6.2) at the centre: the static coefficient while the faces do not slide
-    const Vec3 centreVelocity = b.linearVelocity + glm::cross(b.angularVelocity, m.centreB) -
-                                a.linearVelocity - glm::cross(a.angularVelocity, m.centreA);
-    const Vec3 sliding = centreVelocity - glm::dot(m.normal, centreVelocity) * m.normal;
-    m.friction = lengthSquared(sliding) < kStickingSpeedSquared ? contact.staticFriction
-                                                                         : contact.friction;
-    return m;
-}
 
 class SoftStep {
 public:
