@@ -124,7 +124,6 @@ Real reachOver(const Body& body, const Vec3& gravity, Real horizon)
                       glm::length(gravity) * horizon);
 }
 
-
 Material mixMaterials(const Material& dynamic, const std::optional<Material>& other)
 {
     if (!other) {
