@@ -217,16 +217,21 @@ Softness makeSoftness(Real hertz, Real dampingRatio, Real h)
     return {omega / a1, a2 * a3, a3};
 }
 
-void prepareSoftRows(SoftManifold& m, std::span<const SoftBody> bodies)
+void centreSoftManifold(SoftManifold& m)
 {
-    const SoftBody& a = bodies[m.bodyA];
-    const SoftBody& b = bodies[m.bodyB];
     m.centreA = Vec3(0.0);
     m.centreB = Vec3(0.0);
     for (int k = 0; k < m.pointCount; ++k) {
         m.centreA += m.points[k].anchorA / static_cast<Real>(m.pointCount);
         m.centreB += m.points[k].anchorB / static_cast<Real>(m.pointCount);
     }
+}
+
+void prepareSoftRows(SoftManifold& m, std::span<const SoftBody> bodies)
+{
+    const SoftBody& a = bodies[m.bodyA];
+    const SoftBody& b = bodies[m.bodyB];
+    centreSoftManifold(m);
     for (int k = 0; k < m.pointCount; ++k) {
         SoftPoint& p = m.points[k];
         p.angularA = glm::cross(p.anchorA, m.normal);

@@ -105,9 +105,12 @@ struct SoftManifold {
     std::array<SoftPoint, 4> points{};
 };
 
-/// Fills in a manifold's normal rows' angular parts, its centre, and its tangential and twist
+/// Fills in a manifold's centre, the mean of its points' anchors on each side (12.5).
+void centreSoftManifold(SoftManifold& manifold);
+
+/// Fills in a manifold's centre, its normal rows' angular parts, and its tangential and twist
 /// masses from its points' anchors, normal, tangents and the bodies' inverse masses and
-/// inertias.
+/// inertias. (SoftLanes builds the same rows four manifolds at a time as it packs them.)
 void prepareSoftRows(SoftManifold& manifold, std::span<const SoftBody> bodies);
 
 /// What one solve pass reads besides the rows: the sub-step's softness for contacts between

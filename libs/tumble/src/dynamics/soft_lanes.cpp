@@ -2,6 +2,7 @@
 // (docs/physics/12-soft-step.md, (12.4), (12.5), (12.9)).
 #include "dynamics/soft_lanes.hpp"
 
+#include "dynamics/soft_lane_prepare.hpp"
 #include "dynamics/soft_lane_rows.hpp"
 #include "dynamics/soft_lane_storage.hpp"
 #include "parallel_for.hpp"
@@ -20,17 +21,12 @@ namespace {
 using namespace lanes;
 using namespace soft_rows;
 
+/// What a point brings to its lane; its rows are built in the lanes (prepareLaneRows).
 void packPoint(LanePoint& p, int lane, const SoftPoint& from)
 {
     lanes::setLane(p.anchorA, lane, from.anchorA);
     lanes::setLane(p.anchorB, lane, from.anchorB);
-    lanes::setLane(p.angularA, lane, from.angularA);
-    lanes::setLane(p.angularB, lane, from.angularB);
-    lanes::setLane(p.responseA, lane, from.responseA);
-    lanes::setLane(p.responseB, lane, from.responseB);
     p.baseSeparation[lane] = from.baseSeparation;
-    p.normalMass[lane] = from.normalMass;
-    p.leverArm[lane] = from.leverArm;
     p.normalImpulse[lane] = from.normalImpulse;
     p.maxNormalImpulse[lane] = from.maxNormalImpulse;
     p.normalWork[lane] = from.normalWork;
@@ -38,27 +34,15 @@ void packPoint(LanePoint& p, int lane, const SoftPoint& from)
     p.active[lane] = -1;
 }
 
-void packLane(LaneBlock& block, int lane, const SoftManifold& m, std::span<const SoftBody> bodies)
+/// What a manifold brings to its lane; its rows are built in the lanes (prepareLaneRows).
+void packLane(LaneBlock& block, LaneCentres& centres, int lane, const SoftManifold& m,
+              std::span<const SoftBody> bodies)
 {
     lanes::setLane(block.normal, lane, m.normal);
     lanes::setLane(block.tangent1, lane, m.tangent1);
     lanes::setLane(block.tangent2, lane, m.tangent2);
-    lanes::setLane(block.angularA1, lane, m.angularA1);
-    lanes::setLane(block.angularA2, lane, m.angularA2);
-    lanes::setLane(block.angularB1, lane, m.angularB1);
-    lanes::setLane(block.angularB2, lane, m.angularB2);
-    lanes::setLane(block.responseA1, lane, m.responseA1);
-    lanes::setLane(block.responseA2, lane, m.responseA2);
-    lanes::setLane(block.responseB1, lane, m.responseB1);
-    lanes::setLane(block.responseB2, lane, m.responseB2);
-    lanes::setLane(block.twistResponseA, lane, m.twistResponseA);
-    lanes::setLane(block.twistResponseB, lane, m.twistResponseB);
-    for (int i = 0; i < 3; ++i) {
-        block.tangentK[i][lane] = m.tangentK[i];
-        block.tangentMass[i][lane] = m.tangentMass[i];
-    }
-    block.twistK[lane] = m.twistK;
-    block.twistMass[lane] = m.twistMass;
+    lanes::setLane(centres.a, lane, m.centreA);
+    lanes::setLane(centres.b, lane, m.centreB);
     block.friction[lane] = m.friction;
     block.frictionImpulse1[lane] = m.frictionImpulse1;
     block.frictionImpulse2[lane] = m.frictionImpulse2;
@@ -174,14 +158,16 @@ void SoftLanes::pack(const ManifoldSource& source, const SoftColours& colours,
         LaneBlock& block = storage.blocks[b];
         emptyBlock(block, staticIndex);
         block.lanes = storage.laneCount[b];
+        LaneCentres centres{};
         for (std::uint32_t lane = 0; lane < block.lanes; ++lane) {
             const std::uint32_t index = storage.firstManifold[b] + lane;
             const SoftManifold m = source(index);
             block.manifold[lane] = index;
             block.bodyA[lane] = m.bodyA;
             block.bodyB[lane] = m.bodyB;
-            packLane(block, static_cast<int>(lane), m, bodies);
+            packLane(block, centres, static_cast<int>(lane), m, bodies);
         }
+        prepareLaneRows(block, centres, bodies);
     });
 }
 

@@ -24,10 +24,12 @@ public:
     /// The manifold of a contact, by its index in colour order.
     using ManifoldSource = std::function<SoftManifold(std::size_t)>;
 
-    /// Packs the manifolds `source` gives for every colour but the overflow, their rows and
-    /// impulses, with the inverse masses of `bodies` (whose last entry is the static body), the
-    /// blocks spread over `threads`; each manifold is asked for once, on the thread that packs
-    /// it, so that a large island's manifolds need not be kept anywhere else.
+    /// Packs the manifolds `source` gives for every colour but the overflow, their points,
+    /// centres and impulses, and builds their rows in the lanes from the inverse masses and
+    /// inertias of `bodies` (whose last entry is the static body): the rows of prepareSoftRows,
+    /// bit for bit, which the source need not have built. The blocks are spread over `threads`;
+    /// each manifold is asked for once, on the thread that packs it, so that a large island's
+    /// manifolds need not be kept anywhere else.
     void pack(const ManifoldSource& source, const SoftColours& colours,
               std::span<const SoftBody> bodies, int threads);
     /// The same from manifolds kept.

@@ -17,7 +17,7 @@ SoftBody softBodyOf(const Body& body)
 }
 
 SoftManifold softManifoldOf(const IslandContact& contact, std::span<const SoftBody> bodies,
-                            std::span<const Vec3> centres, std::size_t staticIndex)
+                            std::span<const Vec3> centres, std::size_t staticIndex, bool rows)
 {
     SoftManifold m;
     m.bodyA = contact.solverA;
@@ -42,7 +42,11 @@ SoftManifold softManifoldOf(const IslandContact& contact, std::span<const SoftBo
                               a.linearVelocity - glm::cross(a.angularVelocity, p.anchorA);
         p.relativeVelocity = glm::dot(m.normal, velocity);
     }
-    prepareSoftRows(m, bodies);
+    if (rows) {
+        prepareSoftRows(m, bodies);
+    } else {
+        centreSoftManifold(m);
+    }
     // (6.2) at the centre: the static coefficient while the faces do not slide
     const Vec3 centreVelocity = b.linearVelocity + glm::cross(b.angularVelocity, m.centreB) -
                                 a.linearVelocity - glm::cross(a.angularVelocity, m.centreA);

@@ -70,8 +70,9 @@ public:
 private:
     void prepare(Real dt);
     void orderByColour();
-    /// (12.3) and (12.5): contact k's manifold, started from its owner's kept impulses.
-    SoftManifold manifoldOf(std::size_t k) const;
+    /// (12.3) and (12.5): contact k's manifold, started from its owner's kept impulses; its
+    /// rows only with `rows` (SoftLanes builds them as it packs).
+    SoftManifold manifoldOf(std::size_t k, bool rows) const;
     /// The first contact that is not packed in lanes: the overflow group's, or 0.
     std::size_t firstUnpacked() const;
     void collectResults();
@@ -154,17 +155,17 @@ void SoftStep::prepare(Real dt)
     const std::size_t first = firstUnpacked();
     m_buffers.manifolds.resize(m_buffers.contacts.size() - first);
     parallelFor(m_buffers.manifolds.size(), m_context.threads,
-                [&](std::size_t i) { m_buffers.manifolds[i] = manifoldOf(first + i); });
+                [&](std::size_t i) { m_buffers.manifolds[i] = manifoldOf(first + i, true); });
     if (m_buffers.inLanes) {
-        m_buffers.lanes.pack([&](std::size_t k) { return manifoldOf(k); }, m_buffers.colours,
+        m_buffers.lanes.pack([&](std::size_t k) { return manifoldOf(k, false); }, m_buffers.colours,
                              m_buffers.bodies, m_context.threads);
     }
 }
 
-SoftManifold SoftStep::manifoldOf(std::size_t k) const
+SoftManifold SoftStep::manifoldOf(std::size_t k, bool rows) const
 {
     SoftManifold m = softManifoldOf(m_buffers.contacts[k], m_buffers.bodies, m_buffers.centres,
-                                    m_island.bodies.size());
+                                    m_island.bodies.size(), rows);
     // (12.5): last step's impulses, matched by the other side and the points' feature keys
     warmStartFromCache(m_island, m_slots, m_buffers.contacts[k], m,
                        m_settings.contactTolerance);

@@ -1,0 +1,23 @@
+// The soft step's rows built four manifolds at a time, in the lanes they are solved in
+// (docs/physics/12-soft-step.md, (12.3), (12.9)). For dynamics/soft_lanes.cpp only.
+#pragma once
+
+#include "dynamics/soft_lane_rows.hpp"
+
+#include <span>
+
+namespace tumble::soft_rows {
+
+/// The points' centres of each lane's manifold as offsets from each centre of mass, m.
+struct LaneCentres {
+    Wide3 a, b;
+};
+
+/// prepareSoftRows (soft_contact_solver.cpp) lane by lane, the same operations in the same order,
+/// for a block whose anchors, normal, tangents, inverse masses and points' `active` are packed:
+/// each present point's angular parts, responses, effective mass and lever arm, and the friction
+/// and twist rows at the centres. An absent point keeps its empty rows (unit mass).
+void prepareLaneRows(LaneBlock& block, const LaneCentres& centres,
+                     std::span<const SoftBody> bodies);
+
+} // namespace tumble::soft_rows
