@@ -153,7 +153,8 @@ TEST(CarriedPairGeometry, APairCarriedAsApartStaysApart)
 TEST(CarriedPairGeometry, TheCacheCarriesOnlyWhenAskedAndWithinTheReach)
 {
     PairGeometryCache cache;
-    cache.geometry(7, kBelow, kHalf, kAbove, kHalf, kMargin, true);
+    CuboidPairGeometry scratch;
+    cache.geometry(7, kBelow, kHalf, kAbove, kHalf, kMargin, &scratch);
     const Real reach = carryReach(kHalf, kHalf);
     const Transform near{kAbove.position + Vec3(0.5 * reach, 0.0, 0.0), kAbove.orientation};
     const PairManifold fresh = manifoldWithin(found(kBelow, near), kMargin);
@@ -167,13 +168,17 @@ TEST(CarriedPairGeometry, TheCacheCarriesOnlyWhenAskedAndWithinTheReach)
     // asked to carry from there: half a reach on is carried, one and a half is found again
     const Transform nearer{near.position + Vec3(0.5 * reach, 0.0, 0.0), near.orientation};
     const CuboidPairGeometry& carried =
-        cache.geometry(7, kBelow, kHalf, nearer, kHalf, kMargin, true);
+        cache.geometry(7, kBelow, kHalf, nearer, kHalf, kMargin, &scratch);
     const CuboidPairGeometry expected = carriedFrom(
         found(kBelow, near), kBelow, near, kBelow, nearer, 0.5 * reach);
+    // written where the caller asked, not kept in the cache
+    EXPECT_EQ(&carried, &scratch);
     EXPECT_EQ(carried.points.points[0].position, expected.points.points[0].position);
     const Transform far{near.position + Vec3(1.5 * reach, 0.0, 0.0), near.orientation};
-    const PairManifold farther =
-        manifoldWithin(cache.geometry(7, kBelow, kHalf, far, kHalf, kMargin, true), kMargin);
+    const CuboidPairGeometry& refound =
+        cache.geometry(7, kBelow, kHalf, far, kHalf, kMargin, &scratch);
+    EXPECT_NE(&refound, &scratch);
+    const PairManifold farther = manifoldWithin(refound, kMargin);
     const PairManifold farFresh = manifoldWithin(found(kBelow, far), kMargin);
     ASSERT_EQ(farther.pointCount, farFresh.pointCount);
     for (int i = 0; i < farFresh.pointCount; ++i) {

@@ -19,20 +19,11 @@ bool withinPairCacheReach(const Transform& pose, const Transform& kept)
                halfAngle * halfAngle;
 }
 
-namespace {
-
-bool samePose(const Transform& a, const Transform& b)
-{
-    return a.position == b.position && a.orientation == b.orientation;
-}
-
-} // namespace
-
 const CuboidPairGeometry& PairGeometryCache::geometry(std::uint32_t other, const Transform& poseA,
                                                       const Vec3& halfExtentsA,
                                                       const Transform& poseB,
                                                       const Vec3& halfExtentsB, Real margin,
-                                                      bool carry)
+                                                      CuboidPairGeometry* carryInto)
 {
     const auto index =
         static_cast<std::size_t>(std::find(m_others.begin(), m_others.end(), other) -
@@ -50,27 +41,18 @@ const CuboidPairGeometry& PairGeometryCache::geometry(std::uint32_t other, const
         withinPairCacheReach(poseB, entry.poseB) && decidesMargin(entry.geometry, margin)) {
         return entry.geometry;
     }
-    if (sameSizes && carry) {
-        // the broad phase's test and then the narrow phase ask at the same poses
-        if (samePose(entry.carriedA, poseA) && samePose(entry.carriedB, poseB) &&
-            decidesMargin(entry.carried, margin)) {
-            return entry.carried;
-        }
+    if (sameSizes && carryInto != nullptr) {
         const Real move = relativeMove(entry.poseA, entry.poseB, poseA, poseB, halfExtentsB);
         if (move <= carryReach(halfExtentsA, halfExtentsB)) {
             carryPairGeometry(entry.geometry, entry.poseA, entry.poseB, poseA, poseB, move,
-                              entry.carried);
-            entry.carriedA = poseA;
-            entry.carriedB = poseB;
-            if (decidesMargin(entry.carried, margin)) {
-                return entry.carried;
+                              *carryInto);
+            if (decidesMargin(*carryInto, margin)) {
+                return *carryInto;
             }
         }
     }
     entry.poseA = poseA;
     entry.poseB = poseB;
-    // nothing is carried from the new geometry yet
-    entry.carriedA.orientation = Quat(0.0, 0.0, 0.0, 0.0);
     entry.halfExtentsA = halfExtentsA;
     entry.halfExtentsB = halfExtentsB;
     entry.geometry = findCuboidPairGeometry(cuboidFrame(poseA, halfExtentsA),

@@ -25,11 +25,13 @@ class PairGeometryCache {
 public:
     /// The geometry of cuboid A (the lower slot) with cuboid B, deciding `margin` (m): the kept one
     /// if both poses are within (9.11) of those it was found at and the sizes are the same; with
-    /// `carry`, the kept one carried to the poses if B moved relative to A within (9.12); else
+    /// `carryInto`, the kept one carried to the poses if B moved relative to A within (9.12),
+    /// written to *carryInto (the caller's, read at once: a carried geometry is not kept); else
     /// found now and kept.
     const CuboidPairGeometry& geometry(std::uint32_t other, const Transform& poseA,
                                        const Vec3& halfExtentsA, const Transform& poseB,
-                                       const Vec3& halfExtentsB, Real margin, bool carry = false);
+                                       const Vec3& halfExtentsB, Real margin,
+                                       CuboidPairGeometry* carryInto = nullptr);
 
     /// Drops the pairs not asked for since the last call.
     void forgetUnasked();
@@ -42,19 +44,14 @@ public:
     [[nodiscard]] std::size_t size() const { return m_entries.size(); }
 
 private:
-    /// The fields every request reads come first, the carried geometry (read in most requests
-    /// of a soft world) right after them: a request then touches few cache lines.
+    /// The fields every request reads come first, then the geometry: a request touches the
+    /// entry's header and the points it has (a soft world carries them every step).
     struct Entry {
         bool asked = false;
         Transform poseA{};
         Transform poseB{};
-        /// The poses the last carried geometry was carried to (9.12).
-        Transform carriedA{};
-        Transform carriedB{};
         Vec3 halfExtentsA{0.0};
         Vec3 halfExtentsB{0.0};
-        /// The last geometry carried from `geometry`.
-        CuboidPairGeometry carried{};
         CuboidPairGeometry geometry{};
     };
     /// The other side of each entry, apart from the entries so that finding one reads little.

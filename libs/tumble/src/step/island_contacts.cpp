@@ -145,9 +145,12 @@ const CuboidPairGeometry& pairGeometry(std::span<BodySlot> slots, std::uint32_t 
     // kept under the other side's slot, so that a body's pairs with two static boxes are apart
     const std::uint32_t owner = pairGeometryOwner(slots, slotA, slotB);
     const std::uint32_t other = owner == slotA ? slotB : slotA;
+    // a carried geometry is read at once by the caller, on this thread (9.12)
+    thread_local CuboidPairGeometry carried;
     return slots[owner].pairGeometry.geometry(other, {a.position, a.orientation},
                                               a.shape.halfExtents(), {b.position, b.orientation},
-                                              b.shape.halfExtents(), margin, carry);
+                                              b.shape.halfExtents(), margin,
+                                              carry ? &carried : nullptr);
 }
 
 bool mayTouch(std::span<BodySlot> slots, std::uint32_t slotA, std::uint32_t slotB,

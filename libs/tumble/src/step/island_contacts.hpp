@@ -72,7 +72,8 @@ inline std::uint32_t pairGeometryOwner(std::span<const BodySlot> slots, std::uin
 }
 
 /// The box-box geometry of the pair (slotA < slotB) deciding `margin`, kept by its owner
-/// (pairGeometryOwner) under the other side's slot; with `carry`, carried within (9.12).
+/// (pairGeometryOwner) under the other side's slot; with `carry`, carried within (9.12), and then
+/// valid until this thread's next call.
 const CuboidPairGeometry& pairGeometry(std::span<BodySlot> slots, std::uint32_t slotA,
                                        std::uint32_t slotB, Real margin, bool carry = false);
 
