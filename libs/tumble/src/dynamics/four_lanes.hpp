@@ -19,8 +19,13 @@ namespace tumble::lanes {
 
 constexpr int kLanes = 4;
 
+// Each lane function is built three times on x86-64 with GCC: for x86-64-v4 (AVX-512: the same
+// four-double vectors, with 32 registers instead of 16, so the lane passes keep their rows in
+// registers rather than on the stack), for AVX2, and for the baseline; the loader picks the one
+// the processor runs. No build fuses a multiply and an add (-ffp-contract=off), so all three
+// give the same bits.
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
-#define TUMBLE_WIDE_CLONES __attribute__((target_clones("avx2", "default")))
+#define TUMBLE_WIDE_CLONES __attribute__((target_clones("arch=x86-64-v4", "avx2", "default")))
 #else
 #define TUMBLE_WIDE_CLONES
 #endif

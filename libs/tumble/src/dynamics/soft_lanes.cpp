@@ -74,8 +74,8 @@ void emptyBlock(LaneBlock& block, std::uint32_t staticIndex)
     }
 }
 
-/// solveSoft over blocks. On x86-64 with GCC it is compiled for AVX2 and for the baseline, and
-/// the loader picks the one the processor runs; both give the same bits (no fused operations).
+/// solveSoft over blocks, built for AVX-512, AVX2 and the baseline (TUMBLE_WIDE_CLONES); all
+/// give the same bits (no fused operations).
 TUMBLE_WIDE_CLONES
 void solveBlocks(std::span<LaneBlock> blocks, std::span<SoftBody> bodies, const LaneSettings& s)
 {

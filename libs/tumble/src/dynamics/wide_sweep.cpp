@@ -105,7 +105,7 @@ TUMBLE_WIDE_INLINE void widen(Wide& largest, Wide value, Mask active)
 TUMBLE_WIDE_INLINE void solveSlot(WidePoint& p, LaneBodies& bodies, WideMaxima& maxima)
 {
     // no lambdas here: unoptimised, a lambda stays a function of the baseline target, and a
-    // vector passed to it from the AVX2 copy would arrive by another convention
+    // vector passed to it from a vector build's copy would arrive by another convention
     const Mask movesA = p.active & bodies.movesA;
     const Mask movesB = p.active & bodies.movesB;
     // (11.4): normal impulse with accumulated clamping
@@ -172,9 +172,9 @@ struct FourLaneSweeps::Storage {
 
 namespace {
 
-/// FourLaneSweeps::sweep. On x86-64 with GCC it is compiled twice, for AVX2 (a lane to each
-/// of the four doubles of a register) and for the baseline, and the loader picks the one the
-/// processor runs; both give the same bits, since neither fuses a multiply and an add.
+/// FourLaneSweeps::sweep. On x86-64 with GCC it is compiled for AVX-512 and AVX2 (a lane to
+/// each of the four doubles of a register) and for the baseline, and the loader picks the one
+/// the processor runs; all give the same bits, since none fuses a multiply and an add.
 TUMBLE_WIDE_CLONES
 void sweepBlocks(std::span<const WideBlock> blocks, std::span<WidePoint> points,
                  std::span<SolverBody> bodies, WideMaxima& wide)
