@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 namespace tumble {
 
@@ -203,74 +202,6 @@ void solveFriction(SoftPair& pair, SoftManifold& m)
 }
 
 } // namespace
-
-Softness makeSoftness(Real hertz, Real dampingRatio, Real h)
-{
-    if (hertz == 0.0) {
-        return {};
-    }
-    // implicit Euler on m x'' = -k x - c x' with k = m omega^2, c = 2 m zeta omega (12.2)
-    const Real omega = 2.0 * std::numbers::pi * hertz;
-    const Real a1 = 2.0 * dampingRatio + h * omega;
-    const Real a2 = h * omega * a1;
-    const Real a3 = 1.0 / (1.0 + a2);
-    return {omega / a1, a2 * a3, a3};
-}
-
-void centreSoftManifold(SoftManifold& m)
-{
-    m.centreA = Vec3(0.0);
-    m.centreB = Vec3(0.0);
-    for (int k = 0; k < m.pointCount; ++k) {
-        m.centreA += m.points[k].anchorA / static_cast<Real>(m.pointCount);
-        m.centreB += m.points[k].anchorB / static_cast<Real>(m.pointCount);
-    }
-}
-
-void prepareSoftRows(SoftManifold& m, std::span<const SoftBody> bodies)
-{
-    const SoftBody& a = bodies[m.bodyA];
-    const SoftBody& b = bodies[m.bodyB];
-    centreSoftManifold(m);
-    for (int k = 0; k < m.pointCount; ++k) {
-        SoftPoint& p = m.points[k];
-        p.angularA = glm::cross(p.anchorA, m.normal);
-        p.angularB = glm::cross(p.anchorB, m.normal);
-        p.responseA = a.invInertia * p.angularA;
-        p.responseB = b.invInertia * p.angularB;
-        // (11.2): K = mA + mB + (rA x n) . IA^-1 (rA x n) + (rB x n) . IB^-1 (rB x n)
-        const Real kn = a.invMass + b.invMass + glm::dot(p.angularA, p.responseA) +
-                       glm::dot(p.angularB, p.responseB);
-        p.normalMass = kn > 0.0 ? 1.0 / kn : 0.0;
-        const Vec3 fromCentre = m.points[k].anchorB - m.centreB;
-        m.points[k].leverArm = glm::length(fromCentre - glm::dot(fromCentre, m.normal) * m.normal);
-    }
-    m.angularA1 = glm::cross(m.centreA, m.tangent1);
-    m.angularA2 = glm::cross(m.centreA, m.tangent2);
-    m.angularB1 = glm::cross(m.centreB, m.tangent1);
-    m.angularB2 = glm::cross(m.centreB, m.tangent2);
-    m.responseA1 = a.invInertia * m.angularA1;
-    m.responseA2 = a.invInertia * m.angularA2;
-    m.responseB1 = b.invInertia * m.angularB1;
-    m.responseB2 = b.invInertia * m.angularB2;
-    m.twistResponseA = a.invInertia * m.normal;
-    m.twistResponseB = b.invInertia * m.normal;
-    // (11.3) at the centre: K_ij = (mA + mB) t_i . t_j + (cA x t_i) . IA^-1 (cA x t_j) + ...
-    const Real massSum = a.invMass + b.invMass;
-    const Real k11 = massSum + glm::dot(m.angularA1, m.responseA1) +
-                     glm::dot(m.angularB1, m.responseB1);
-    const Real k12 = glm::dot(m.angularA1, m.responseA2) + glm::dot(m.angularB1, m.responseB2);
-    const Real k22 = massSum + glm::dot(m.angularA2, m.responseA2) +
-                     glm::dot(m.angularB2, m.responseB2);
-    m.tangentK = {k11, k12, k22};
-    const Real determinant = k11 * k22 - k12 * k12;
-    m.tangentMass = determinant > 0.0 ? std::array<Real, 3>{k22 / determinant,
-                                                            -k12 / determinant,
-                                                            k11 / determinant}
-                                      : std::array<Real, 3>{};
-    m.twistK = glm::dot(m.normal, m.twistResponseA) + glm::dot(m.normal, m.twistResponseB);
-    m.twistMass = m.twistK > 0.0 ? 1.0 / m.twistK : 0.0;
-}
 
 void warmStartSoft(std::span<const SoftManifold> manifolds, std::span<SoftBody> bodies,
                    const SoftColours& colours, int threads, SoftLanes* lanes)

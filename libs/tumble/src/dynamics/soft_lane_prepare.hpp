@@ -13,7 +13,7 @@ struct LaneCentres {
     Wide3 a, b;
 };
 
-/// prepareSoftRows (soft_contact_solver.cpp) lane by lane, the same operations in the same order,
+/// prepareSoftRows (soft_rows.cpp) lane by lane, the same operations in the same order,
 /// for a block whose anchors, normal, tangents, inverse masses and points' `active` are packed:
 /// each present point's angular parts, responses, effective mass and lever arm, and the friction
 /// and twist rows at the centres. An absent point keeps its empty rows (unit mass).
