@@ -70,9 +70,27 @@ struct SoftPair {
     {
         const Vec3 impulse = d1 * m.tangent1 + d2 * m.tangent2;
         vA -= a.invMass * impulse;
-        wA -= d1 * m.responseA1 + d2 * m.responseA2;
+        wA -= a.invInertia * (d1 * m.angularA1 + d2 * m.angularA2);
         vB += b.invMass * impulse;
-        wB += d1 * m.responseB1 + d2 * m.responseB2;
+        wB += b.invInertia * (d1 * m.angularB1 + d2 * m.angularB2);
+    }
+
+    /// The normal impulses of a manifold's points at once: their sum along n, and the sum of
+    /// their moments r x n through each inverse inertia (one product a side, not one a point).
+    void applyNormals(const SoftManifold& m, const std::array<Real, 4>& impulse)
+    {
+        Real total = 0.0;
+        Vec3 momentA(0.0);
+        Vec3 momentB(0.0);
+        for (int k = 0; k < m.pointCount; ++k) {
+            total = total + impulse[k];
+            momentA = momentA + impulse[k] * m.points[k].angularA;
+            momentB = momentB + impulse[k] * m.points[k].angularB;
+        }
+        vA -= (a.invMass * total) * m.normal;
+        wA -= a.invInertia * momentA;
+        vB += (b.invMass * total) * m.normal;
+        wB += b.invInertia * momentB;
     }
 
     /// The normal velocity at a point from its angular rows (12.4): n . (vB - vA) + (rB x n) . wB
@@ -128,9 +146,10 @@ struct SoftMotion {
     }
 };
 
-/// (12.4): the normal row of one point, soft and biased or (the relax pass) rigid.
-void solveNormal(SoftPair& pair, const SoftManifold& m, SoftPoint& p, const SoftMotion& motion,
-                 const SoftSolveSettings& settings, bool useBias)
+/// (12.4): the normal row of point k, soft and biased or (the relax pass) rigid, from and into
+/// the normal velocities `u` of the manifold's points: its impulse changes u_i by K_ik times it.
+void solveNormal(const SoftManifold& m, int k, SoftPoint& p, const SoftMotion& motion,
+                 const SoftSolveSettings& settings, bool useBias, std::array<Real, 4>& u)
 {
     // the gap now, from how far the bodies moved and turned since the step began (12.3)
     const Real gap = motion.centres + glm::dot(motion.normalB, p.anchorB) -
@@ -147,14 +166,17 @@ void solveNormal(SoftPair& pair, const SoftManifold& m, SoftPoint& p, const Soft
         massScale = soft.massScale;
         impulseScale = soft.impulseScale;
     }
-    const Real normalBefore = pair.normalVelocity(m.normal, p);
+    const Real normalBefore = u[k];
     const Real impulse =
         -p.normalMass * (massScale * normalBefore + bias) - impulseScale * p.normalImpulse;
     const Real accumulated = std::max(p.normalImpulse + impulse, 0.0);
     const Real applied = accumulated - p.normalImpulse;
     p.normalImpulse = accumulated;
     p.maxNormalImpulse = std::max(p.maxNormalImpulse, applied);
-    pair.applyNormal(m.normal, p, applied);
+    for (int i = 0; i < m.pointCount; ++i) {
+        const Real coupling = i == k ? p.normalK : m.normalCoupling[couplingIndex(i, k)];
+        u[i] = u[i] + coupling * applied;
+    }
     // (8.2): the work of an impulse is its size times the mean of the velocities it joins
     p.normalWork += applied * (normalBefore + 0.5 * applied / p.normalMass);
 }
@@ -210,10 +232,11 @@ void warmStartSoft(std::span<const SoftManifold> manifolds, std::span<SoftBody> 
     forEachManifold(manifolds.size(), colours, threads, [&](std::size_t index) {
         const SoftManifold& m = manifolds[index];
         SoftPair pair(bodies[m.bodyA], bodies[m.bodyB]);
+        std::array<Real, 4> impulses{};
         for (int k = 0; k < m.pointCount; ++k) {
-            const SoftPoint& p = m.points[k];
-            pair.applyNormal(m.normal, p, p.normalImpulse);
+            impulses[k] = m.points[k].normalImpulse;
         }
+        pair.applyNormals(m, impulses);
         pair.applyTwist(m, m.twistImpulse);
         pair.applyFriction(m, m.frictionImpulse1, m.frictionImpulse2);
         pair.store();
@@ -229,14 +252,25 @@ void solveSoft(std::span<SoftManifold> manifolds, std::span<SoftBody> bodies,
         SoftManifold& m = manifolds[index];
         SoftPair pair(bodies[m.bodyA], bodies[m.bodyB]);
         const SoftMotion motion(m, pair.a, pair.b);
-        // (12.4): forth and back over the points, so that a face's impulses carry no bias of
-        // the order in which its points come
+        std::array<Real, 4> u{};
+        std::array<Real, 4> before{};
         for (int k = 0; k < m.pointCount; ++k) {
-            solveNormal(pair, m, m.points[k], motion, settings, useBias);
+            u[k] = pair.normalVelocity(m.normal, m.points[k]);
+            before[k] = m.points[k].normalImpulse;
+        }
+        // (12.4): forth and back over the points, so that a face's impulses carry no bias of
+        // the order in which its points come; the bodies take what the sweeps added at the end
+        for (int k = 0; k < m.pointCount; ++k) {
+            solveNormal(m, k, m.points[k], motion, settings, useBias, u);
         }
         for (int k = m.pointCount - 1; k >= 0; --k) {
-            solveNormal(pair, m, m.points[k], motion, settings, useBias);
+            solveNormal(m, k, m.points[k], motion, settings, useBias, u);
         }
+        std::array<Real, 4> added{};
+        for (int k = 0; k < m.pointCount; ++k) {
+            added[k] = m.points[k].normalImpulse - before[k];
+        }
+        pair.applyNormals(m, added);
         // (12.5): friction in both passes, so that the positions the biased pass moves to
         // are not reached sliding
         solveFriction(pair, m);

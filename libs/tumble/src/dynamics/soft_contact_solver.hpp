@@ -50,6 +50,8 @@ struct SoftPoint {
     Vec3 responseA{0.0};
     Vec3 responseB{0.0};
     Real baseSeparation = 0.0;
+    /// The normal row's K (11.2) and its inverse, the effective mass.
+    Real normalK = 0.0;
     Real normalMass = 0.0;
     /// Distance of the point from the manifold's centre, m: its lever for twist friction (12.5).
     Real leverArm = 0.0;
@@ -62,6 +64,14 @@ struct SoftPoint {
     /// Work of the point's normal impulses over the step, J (8.2).
     Real normalWork = 0.0;
 };
+
+/// The index in SoftManifold::normalCoupling of points i and j, i != j, in either order.
+constexpr int couplingIndex(int i, int j)
+{
+    const int low = i < j ? i : j;
+    const int high = i < j ? j : i;
+    return low == 0 ? high - 1 : low == 1 ? high + 1 : 5;
+}
 
 /// A contact of the soft step: two bodies, one normal, up to four points, and one friction
 /// row pair and one twist row at the points' centre (12.5).
@@ -94,6 +104,10 @@ struct SoftManifold {
     /// K_t at the centre over (t1, t2) and its inverse, as (11, 12, 22) (11.3).
     std::array<Real, 3> tangentK{};
     std::array<Real, 3> tangentMass{};
+    /// How an impulse along the normal at point j changes the normal velocity at point i < j:
+    /// K_ij = mA + mB + (rA_i x n) . IA^-1 (rA_j x n) + (rB_i x n) . IB^-1 (rB_j x n), for
+    /// (i, j) = (0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3) (12.4).
+    std::array<Real, 6> normalCoupling{};
     /// n . (IA^-1 + IB^-1) n and its inverse: the twist row's K and effective mass.
     Real twistK = 0.0;
     Real twistMass = 0.0;
@@ -108,8 +122,8 @@ struct SoftManifold {
 /// Fills in a manifold's centre, the mean of its points' anchors on each side (12.5).
 void centreSoftManifold(SoftManifold& manifold);
 
-/// Fills in a manifold's centre, its normal rows' angular parts, and its tangential and twist
-/// masses from its points' anchors, normal, tangents and the bodies' inverse masses and
+/// Fills in a manifold's centre, its normal rows' angular parts, masses and couplings, and its
+/// tangential and twist masses from its points' anchors, normal, tangents and the bodies' inverse masses and
 /// inertias. (SoftLanes builds the same rows four manifolds at a time as it packs them.)
 void prepareSoftRows(SoftManifold& manifold, std::span<const SoftBody> bodies);
 

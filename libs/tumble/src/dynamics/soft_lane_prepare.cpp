@@ -5,25 +5,6 @@ namespace tumble::soft_rows {
 
 namespace {
 
-/// glm's cross, lane by lane: (a.y b.z - b.y a.z, a.z b.x - b.z a.x, a.x b.y - b.x a.y).
-TUMBLE_WIDE_INLINE Wide3 cross(const Wide3& a, const Wide3& b)
-{
-    return {a.y * b.z - b.y * a.z, a.z * b.x - b.z * a.x, a.x * b.y - b.x * a.y};
-}
-
-/// A symmetric or general 3x3 matrix of each lane, by glm's columns.
-struct WideMat3 {
-    Wide3 column[3];
-};
-
-/// glm's matrix times vector: row r is (m[0][r] v.x + m[1][r] v.y) + m[2][r] v.z.
-TUMBLE_WIDE_INLINE Wide3 times(const WideMat3& m, const Wide3& v)
-{
-    return {m.column[0].x * v.x + m.column[1].x * v.y + m.column[2].x * v.z,
-            m.column[0].y * v.x + m.column[1].y * v.y + m.column[2].y * v.z,
-            m.column[0].z * v.x + m.column[1].z * v.y + m.column[2].z * v.z};
-}
-
 TUMBLE_WIDE_INLINE Wide3 scaled(const Wide3& v, Wide s) { return {v.x * s, v.y * s, v.z * s}; }
 
 TUMBLE_WIDE_INLINE Wide3 chosen(Mask where, const Wide3& yes, const Wide3& no)
@@ -50,8 +31,9 @@ TUMBLE_WIDE_INLINE void preparePoint(const LaneBlock& block, LanePoint& p,
                                      const LaneCentres& centres, const WideMat3& inertiaA,
                                      const WideMat3& inertiaB)
 {
-    const Wide3 angularA = cross(p.anchorA, block.normal);
-    const Wide3 angularB = cross(p.anchorB, block.normal);
+    const LaneAngular angular = pointAngular(block, p);
+    const Wide3& angularA = angular.a;
+    const Wide3& angularB = angular.b;
     const Wide3 responseA = times(inertiaA, angularA);
     const Wide3 responseB = times(inertiaB, angularB);
     const Wide k = block.invMassA + block.invMassB + dot(angularA, responseA) +
@@ -60,10 +42,7 @@ TUMBLE_WIDE_INLINE void preparePoint(const LaneBlock& block, LanePoint& p,
     const Wide3 fromCentre = minus(p.anchorB, centres.b);
     const Wide3 inPlane = minus(fromCentre, scaled(block.normal, dot(fromCentre, block.normal)));
     const Mask present = p.active;
-    p.angularA = chosen(present, angularA, p.angularA);
-    p.angularB = chosen(present, angularB, p.angularB);
-    p.responseA = chosen(present, responseA, p.responseA);
-    p.responseB = chosen(present, responseB, p.responseB);
+    p.normalK = select(present, k, p.normalK);
     p.normalMass = select(present, mass, p.normalMass);
     p.leverArm = select(present, squareRoot(dot(inPlane, inPlane)), p.leverArm);
 }
@@ -79,24 +58,38 @@ void prepareLaneRows(LaneBlock& block, const LaneCentres& centres,
     for (LanePoint& p : block.points) {
         preparePoint(block, p, centres, inertiaA, inertiaB);
     }
+    // (12.4): the couplings of each two points, where both are present
+    for (int i = 0; i < 4; ++i) {
+        for (int j = i + 1; j < 4; ++j) {
+            const LaneAngular angular = pointAngular(block, block.points[i]);
+            const LaneAngular other = pointAngular(block, block.points[j]);
+            const Wide coupling = block.invMassA + block.invMassB +
+                                  dot(angular.a, times(inertiaA, other.a)) +
+                                  dot(angular.b, times(inertiaB, other.b));
+            Wide& kept = block.normalCoupling[couplingIndex(i, j)];
+            kept = select(block.points[j].active, coupling, kept);
+        }
+    }
     block.angularA1 = cross(centres.a, block.tangent1);
     block.angularA2 = cross(centres.a, block.tangent2);
     block.angularB1 = cross(centres.b, block.tangent1);
     block.angularB2 = cross(centres.b, block.tangent2);
-    block.responseA1 = times(inertiaA, block.angularA1);
-    block.responseA2 = times(inertiaA, block.angularA2);
-    block.responseB1 = times(inertiaB, block.angularB1);
-    block.responseB2 = times(inertiaB, block.angularB2);
+    block.inertiaA = inertiaA;
+    block.inertiaB = inertiaB;
+    const Wide3 responseA1 = times(inertiaA, block.angularA1);
+    const Wide3 responseA2 = times(inertiaA, block.angularA2);
+    const Wide3 responseB1 = times(inertiaB, block.angularB1);
+    const Wide3 responseB2 = times(inertiaB, block.angularB2);
     block.twistResponseA = times(inertiaA, block.normal);
     block.twistResponseB = times(inertiaB, block.normal);
     // (11.3) at the centre
     const Wide massSum = block.invMassA + block.invMassB;
-    const Wide k11 = massSum + dot(block.angularA1, block.responseA1) +
-                     dot(block.angularB1, block.responseB1);
+    const Wide k11 = massSum + dot(block.angularA1, responseA1) +
+                     dot(block.angularB1, responseB1);
     const Wide k12 =
-        dot(block.angularA1, block.responseA2) + dot(block.angularB1, block.responseB2);
-    const Wide k22 = massSum + dot(block.angularA2, block.responseA2) +
-                     dot(block.angularB2, block.responseB2);
+        dot(block.angularA1, responseA2) + dot(block.angularB1, responseB2);
+    const Wide k22 = massSum + dot(block.angularA2, responseA2) +
+                     dot(block.angularB2, responseB2);
     block.tangentK[0] = k11;
     block.tangentK[1] = k12;
     block.tangentK[2] = k22;

@@ -36,10 +36,11 @@ SoftManifold restitutionRowsOf(const LaneBlock& block, std::uint32_t lane)
     for (int k = 0; k < m.pointCount; ++k) {
         const LanePoint& from = block.points[k];
         SoftPoint& p = m.points[k];
-        p.angularA = laneOf(from.angularA, l);
-        p.angularB = laneOf(from.angularB, l);
-        p.responseA = laneOf(from.responseA, l);
-        p.responseB = laneOf(from.responseB, l);
+        const LaneAngular angular = pointAngular(block, from);
+        p.angularA = laneOf(angular.a, l);
+        p.angularB = laneOf(angular.b, l);
+        p.responseA = laneOf(times(block.inertiaA, angular.a), l);
+        p.responseB = laneOf(times(block.inertiaB, angular.b), l);
         p.normalMass = from.normalMass[lane];
         p.relativeVelocity = from.relativeVelocity[lane];
         p.normalImpulse = from.normalImpulse[lane];

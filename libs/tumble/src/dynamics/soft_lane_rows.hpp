@@ -16,19 +16,36 @@ namespace tumble::soft_rows {
 using namespace lanes;
 
 /// The k-th point of each lane's manifold, or nothing (`active` clear, the point's rows zero).
+/// Its angular rows r x n are formed from the anchors where a pass needs them (pointAngular):
+/// a block is read twelve times a step, and its size is what the pass waits on.
 struct LanePoint {
-    Wide3 anchorA, anchorB, angularA, angularB, responseA, responseB;
-    Wide baseSeparation, normalMass, leverArm, normalImpulse, maxNormalImpulse, normalWork,
-        relativeVelocity;
+    Wide3 anchorA, anchorB;
+    Wide baseSeparation, normalK, normalMass, leverArm, normalImpulse, maxNormalImpulse,
+        normalWork, relativeVelocity;
     Mask active;
 };
+
+/// A 3x3 matrix of each lane, by glm's columns.
+struct WideMat3 {
+    Wide3 column[3];
+};
+
+/// glm's matrix times vector: row r is (m[0][r] v.x + m[1][r] v.y) + m[2][r] v.z.
+TUMBLE_WIDE_INLINE Wide3 times(const WideMat3& m, const Wide3& v)
+{
+    return {m.column[0].x * v.x + m.column[1].x * v.y + m.column[2].x * v.z,
+            m.column[0].y * v.x + m.column[1].y * v.y + m.column[2].y * v.z,
+            m.column[0].z * v.x + m.column[1].z * v.y + m.column[2].z * v.z};
+}
 
 /// Four manifolds of one colour; a lane past `lanes` is empty: the static body on both sides,
 /// every row zero.
 struct LaneBlock {
     Wide3 normal, tangent1, tangent2;
     Wide3 angularA1, angularA2, angularB1, angularB2;
-    Wide3 responseA1, responseA2, responseB1, responseB2, twistResponseA, twistResponseB;
+    Wide3 twistResponseA, twistResponseB;
+    WideMat3 inertiaA, inertiaB;
+    Wide normalCoupling[6];
     Wide tangentK[3];
     Wide tangentMass[3];
     Wide twistK, twistMass, friction, frictionImpulse1, frictionImpulse2, twistImpulse,
@@ -82,14 +99,46 @@ TUMBLE_WIDE_INLINE Wide3 minus(const Wide3& a, const Wide3& b)
     return {a.x - b.x, a.y - b.y, a.z - b.z};
 }
 
-/// SoftPair::applyNormal where `active`.
-TUMBLE_WIDE_INLINE void applyNormal(const LaneBlock& block, const LanePoint& p, Wide impulse,
-                                    Mask active, LaneVelocities& v)
+/// glm's cross, lane by lane: (a.y b.z - b.y a.z, a.z b.x - b.z a.x, a.x b.y - b.x a.y).
+TUMBLE_WIDE_INLINE Wide3 cross(const Wide3& a, const Wide3& b)
 {
-    pushAlong(v.vA, block.invMassA * impulse, block.normal, active, false);
-    pushAlong(v.wA, impulse, p.responseA, active, false);
-    pushAlong(v.vB, block.invMassB * impulse, block.normal, active, true);
-    pushAlong(v.wB, impulse, p.responseB, active, true);
+    return {a.y * b.z - b.y * a.z, a.z * b.x - b.z * a.x, a.x * b.y - b.x * a.y};
+}
+
+/// A point's normal row's angular parts, rA x n and rB x n, as prepareSoftRows forms them.
+struct LaneAngular {
+    Wide3 a, b;
+};
+
+TUMBLE_WIDE_INLINE LaneAngular pointAngular(const LaneBlock& block, const LanePoint& p)
+{
+    return {cross(p.anchorA, block.normal), cross(p.anchorB, block.normal)};
+}
+
+/// The normal impulses of the four points at once: their sum along n, their moments through
+/// the inverse inertias.
+TUMBLE_WIDE_INLINE void applyNormals(const LaneBlock& block, const Wide (&impulse)[4],
+                                     LaneVelocities& v)
+{
+    Wide total = splat(0.0);
+    Wide3 momentA{splat(0.0), splat(0.0), splat(0.0)};
+    Wide3 momentB = momentA;
+    for (int k = 0; k < 4; ++k) {
+        const LanePoint& p = block.points[k];
+        const Wide share = select(p.active, impulse[k], splat(0.0));
+        const LaneAngular angular = pointAngular(block, p);
+        total = total + share;
+        momentA = {momentA.x + share * angular.a.x, momentA.y + share * angular.a.y,
+                   momentA.z + share * angular.a.z};
+        momentB = {momentB.x + share * angular.b.x, momentB.y + share * angular.b.y,
+                   momentB.z + share * angular.b.z};
+    }
+    addScaled(v.vA, block.invMassA * total, block.normal, false);
+    const Wide3 turnA = times(block.inertiaA, momentA);
+    v.wA = {v.wA.x - turnA.x, v.wA.y - turnA.y, v.wA.z - turnA.z};
+    addScaled(v.vB, block.invMassB * total, block.normal, true);
+    const Wide3 turnB = times(block.inertiaB, momentB);
+    v.wB = {v.wB.x + turnB.x, v.wB.y + turnB.y, v.wB.z + turnB.z};
 }
 
 /// SoftPair::applyTwist and SoftPair::applyFriction.
@@ -105,12 +154,12 @@ TUMBLE_WIDE_INLINE void applyFriction(const LaneBlock& block, Wide d1, Wide d2,
     const Wide3 impulse{d1 * block.tangent1.x + d2 * block.tangent2.x,
                         d1 * block.tangent1.y + d2 * block.tangent2.y,
                         d1 * block.tangent1.z + d2 * block.tangent2.z};
-    const Wide3 turnA{d1 * block.responseA1.x + d2 * block.responseA2.x,
-                      d1 * block.responseA1.y + d2 * block.responseA2.y,
-                      d1 * block.responseA1.z + d2 * block.responseA2.z};
-    const Wide3 turnB{d1 * block.responseB1.x + d2 * block.responseB2.x,
-                      d1 * block.responseB1.y + d2 * block.responseB2.y,
-                      d1 * block.responseB1.z + d2 * block.responseB2.z};
+    const Wide3 turnA = times(block.inertiaA, Wide3{d1 * block.angularA1.x + d2 * block.angularA2.x,
+                      d1 * block.angularA1.y + d2 * block.angularA2.y,
+                      d1 * block.angularA1.z + d2 * block.angularA2.z});
+    const Wide3 turnB = times(block.inertiaB, Wide3{d1 * block.angularB1.x + d2 * block.angularB2.x,
+                      d1 * block.angularB1.y + d2 * block.angularB2.y,
+                      d1 * block.angularB1.z + d2 * block.angularB2.z});
     addScaled(v.vA, block.invMassA, impulse, false);
     v.wA = minus(v.wA, turnA);
     addScaled(v.vB, block.invMassB, impulse, true);
@@ -145,30 +194,72 @@ struct LaneSettings {
     bool useBias;
 };
 
-/// solveNormal (soft_contact_solver.cpp) lane by lane, the same operations in the same order.
-TUMBLE_WIDE_INLINE void solveNormal(const LaneBlock& block, LanePoint& p, const LaneMotion& motion,
-                                    const LaneSettings& s, LaneVelocities& v)
+/// The normal velocities of the four points of each lane, n . (vB - vA) + (rB x n) . wB -
+/// (rA x n) . wA, as SoftPair::normalVelocity forms them.
+struct LaneNormalVelocities {
+    Wide at[4];
+};
+
+TUMBLE_WIDE_INLINE LaneNormalVelocities normalVelocities(const LaneBlock& block,
+                                                         const LaneVelocities& v)
+{
+    LaneNormalVelocities u;
+    for (int k = 0; k < 4; ++k) {
+        const LaneAngular angular = pointAngular(block, block.points[k]);
+        u.at[k] = dot(block.normal, minus(v.vB, v.vA)) + dot(angular.b, v.wB) -
+                  dot(angular.a, v.wA);
+    }
+    return u;
+}
+
+/// The softness of each lane's rows in one pass, against the static body or another body.
+struct LaneSoftness {
+    Wide massRate, mass, impulse;
+};
+
+TUMBLE_WIDE_INLINE LaneSoftness softnessOf(const LaneBlock& block, const LaneSettings& s)
+{
+    const Wide rate = select(block.againstStatic, s.staticRate, s.dynamicRate);
+    const Wide mass = select(block.againstStatic, s.staticMass, s.dynamicMass);
+    return {mass * rate, mass, select(block.againstStatic, s.staticImpulse, s.dynamicImpulse)};
+}
+
+/// What a point's normal row aims at in this pass: the gap's target speed and the soft scales,
+/// the first half of solveNormal (soft_contact_solver.cpp) lane by lane, the same operations in
+/// the same order. The gap is the same on the way forth and back, so it is found once a pass.
+struct LaneTarget {
+    Wide bias, massScale, impulseScale;
+};
+
+TUMBLE_WIDE_INLINE LaneTarget targetOf(const LanePoint& p, const LaneMotion& motion,
+                                       const LaneSoftness& soft, const LaneSettings& s)
 {
     const Wide gap = motion.centres + dot(motion.normalB, p.anchorB) -
                      dot(motion.normalA, p.anchorA) + p.baseSeparation;
     const Mask speculative = less(splat(0.0), gap);
     const Mask biased = s.useBias ? ~speculative : Mask{};
-    const Wide rate = select(block.againstStatic, s.staticRate, s.dynamicRate);
-    const Wide softMass = select(block.againstStatic, s.staticMass, s.dynamicMass);
-    const Wide softImpulse = select(block.againstStatic, s.staticImpulse, s.dynamicImpulse);
-    const Wide softBias = maximum(softMass * rate * gap, s.pushLimit);
-    const Wide bias =
-        select(speculative, gap * s.inverseSubstep, select(biased, softBias, splat(0.0)));
-    const Wide massScale = select(biased, softMass, splat(1.0));
-    const Wide impulseScale = select(biased, softImpulse, splat(0.0));
-    const Wide normalBefore = dot(block.normal, minus(v.vB, v.vA)) + dot(p.angularB, v.wB) -
-                              dot(p.angularA, v.wA);
-    const Wide impulse = -p.normalMass * (massScale * normalBefore + bias) -
-                         impulseScale * p.normalImpulse;
+    const Wide softBias = maximum(soft.massRate * gap, s.pushLimit);
+    return {select(speculative, gap * s.inverseSubstep, select(biased, softBias, splat(0.0))),
+            select(biased, soft.mass, splat(1.0)), select(biased, soft.impulse, splat(0.0))};
+}
+
+/// The rest of solveNormal for point k lane by lane, the same operations in the same order: a
+/// lane whose manifold has no point k changes nothing.
+TUMBLE_WIDE_INLINE void solveNormal(LaneBlock& block, int k, const LaneTarget& t,
+                                    LaneNormalVelocities& u)
+{
+    LanePoint& p = block.points[k];
+    const Wide normalBefore = u.at[k];
+    const Wide impulse = -p.normalMass * (t.massScale * normalBefore + t.bias) -
+                         t.impulseScale * p.normalImpulse;
     const Wide accumulated = maximum(p.normalImpulse + impulse, splat(0.0));
     const Wide applied = accumulated - p.normalImpulse;
     const Mask active = p.active;
-    applyNormal(block, p, applied, active, v);
+#pragma GCC unroll 4
+    for (int i = 0; i < 4; ++i) {
+        const Wide coupling = i == k ? p.normalK : block.normalCoupling[couplingIndex(i, k)];
+        u.at[i] = select(active, u.at[i] + coupling * applied, u.at[i]);
+    }
     const Wide work = applied * (normalBefore + splat(0.5) * applied / p.normalMass);
     p.normalImpulse = select(active, accumulated, p.normalImpulse);
     p.maxNormalImpulse = select(active, maximum(p.maxNormalImpulse, applied), p.maxNormalImpulse);

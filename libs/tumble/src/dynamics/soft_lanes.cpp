@@ -82,13 +82,29 @@ void solveBlocks(std::span<LaneBlock> blocks, std::span<SoftBody> bodies, const 
     for (LaneBlock& block : blocks) {
         LaneVelocities v = gather(block, bodies);
         const LaneMotion motion = motionOf(block, bodies);
-        // (12.4): forth and back over the points
+        LaneNormalVelocities u = normalVelocities(block, v);
+        Wide before[4];
+        LaneTarget targets[4];
+        const LaneSoftness soft = softnessOf(block, s);
         for (int k = 0; k < 4; ++k) {
-            solveNormal(block, block.points[k], motion, s, v);
+            before[k] = block.points[k].normalImpulse;
+            targets[k] = targetOf(block.points[k], motion, soft, s);
         }
+        // (12.4): forth and back over the points, then the bodies take what they added; unrolled,
+        // so that the points' normal velocities stay in registers
+#pragma GCC unroll 4
+        for (int k = 0; k < 4; ++k) {
+            solveNormal(block, k, targets[k], u);
+        }
+#pragma GCC unroll 4
         for (int k = 3; k >= 0; --k) {
-            solveNormal(block, block.points[k], motion, s, v);
+            solveNormal(block, k, targets[k], u);
         }
+        Wide added[4];
+        for (int k = 0; k < 4; ++k) {
+            added[k] = block.points[k].normalImpulse - before[k];
+        }
+        applyNormals(block, added, v);
         solveFriction(block, v);
         scatter(block, v, bodies);
     }
@@ -100,9 +116,9 @@ void warmStartBlocks(std::span<const LaneBlock> blocks, std::span<SoftBody> bodi
 {
     for (const LaneBlock& block : blocks) {
         LaneVelocities v = gather(block, bodies);
-        for (const LanePoint& p : block.points) {
-            applyNormal(block, p, p.normalImpulse, p.active, v);
-        }
+        const Wide impulses[4] = {block.points[0].normalImpulse, block.points[1].normalImpulse,
+                                  block.points[2].normalImpulse, block.points[3].normalImpulse};
+        applyNormals(block, impulses, v);
         applyTwist(block, block.twistImpulse, v);
         applyFriction(block, block.frictionImpulse1, block.frictionImpulse2, v);
         scatter(block, v, bodies);

@@ -44,9 +44,20 @@ void prepareSoftRows(SoftManifold& m, std::span<const SoftBody> bodies)
         // (11.2): K = mA + mB + (rA x n) . IA^-1 (rA x n) + (rB x n) . IB^-1 (rB x n)
         const Real kn = a.invMass + b.invMass + glm::dot(p.angularA, p.responseA) +
                        glm::dot(p.angularB, p.responseB);
+        p.normalK = kn;
         p.normalMass = kn > 0.0 ? 1.0 / kn : 0.0;
         const Vec3 fromCentre = m.points[k].anchorB - m.centreB;
         m.points[k].leverArm = glm::length(fromCentre - glm::dot(fromCentre, m.normal) * m.normal);
+    }
+    // (12.4): how each point's impulse moves the others' normal velocities
+    for (int i = 0; i < m.pointCount; ++i) {
+        for (int j = i + 1; j < m.pointCount; ++j) {
+            const SoftPoint& p = m.points[i];
+            const SoftPoint& q = m.points[j];
+            m.normalCoupling[couplingIndex(i, j)] = a.invMass + b.invMass +
+                                                    glm::dot(p.angularA, q.responseA) +
+                                                    glm::dot(p.angularB, q.responseB);
+        }
     }
     m.angularA1 = glm::cross(m.centreA, m.tangent1);
     m.angularA2 = glm::cross(m.centreA, m.tangent2);
