@@ -4,6 +4,7 @@
 
 #include "dynamics/soft_lane_prepare.hpp"
 #include "dynamics/soft_lane_rows.hpp"
+#include "dynamics/soft_lane_solve.hpp"
 #include "dynamics/soft_lane_storage.hpp"
 #include "parallel_for.hpp"
 

@@ -1,0 +1,156 @@
+// The soft step's passes over a block four manifolds at a time: each point's normal row from the
+// points' normal velocities (12.4a), the twist and friction rows, lane by lane in the order of
+// soft_contact_solver.cpp (docs/physics/12-soft-step.md, (12.4), (12.5), (12.9)). For
+// dynamics/soft_lanes.cpp only.
+#pragma once
+
+#include "dynamics/soft_lane_rows.hpp"
+
+namespace tumble::soft_rows {
+
+/// SoftMotion of each lane: how its bodies moved since the step began, seen along its normal.
+struct LaneMotion {
+    Wide centres;
+    Wide3 normalA, normalB;
+};
+
+TUMBLE_WIDE_INLINE LaneMotion motionOf(const LaneBlock& block, std::span<const SoftBody> bodies)
+{
+    LaneMotion motion;
+    for (int lane = 0; lane < kLanes; ++lane) {
+        const SoftBody& a = bodies[block.bodyA[lane]];
+        const SoftBody& b = bodies[block.bodyB[lane]];
+        const Vec3 normal = laneOf(block.normal, lane);
+        motion.centres[lane] = glm::dot(normal, b.deltaPosition - a.deltaPosition);
+        lanes::setLane(motion.normalA, lane, normal * a.deltaRotation);
+        lanes::setLane(motion.normalB, lane, normal * b.deltaRotation);
+    }
+    return motion;
+}
+
+/// What solveNormal reads of the pass's settings, as lanes.
+struct LaneSettings {
+    Wide staticRate, staticMass, staticImpulse;
+    Wide dynamicRate, dynamicMass, dynamicImpulse;
+    Wide inverseSubstep, pushLimit;
+    bool useBias;
+};
+
+/// The normal velocities of the four points of each lane, n . (vB - vA) + (rB x n) . wB -
+/// (rA x n) . wA, as SoftPair::normalVelocity forms them.
+struct LaneNormalVelocities {
+    Wide at[4];
+};
+
+TUMBLE_WIDE_INLINE LaneNormalVelocities normalVelocities(const LaneBlock& block,
+                                                         const LaneVelocities& v)
+{
+    LaneNormalVelocities u;
+    for (int k = 0; k < 4; ++k) {
+        const LaneAngular angular = pointAngular(block, block.points[k]);
+        u.at[k] = dot(block.normal, minus(v.vB, v.vA)) + dot(angular.b, v.wB) -
+                  dot(angular.a, v.wA);
+    }
+    return u;
+}
+
+/// The softness of each lane's rows in one pass, against the static body or another body.
+struct LaneSoftness {
+    Wide massRate, mass, impulse;
+};
+
+TUMBLE_WIDE_INLINE LaneSoftness softnessOf(const LaneBlock& block, const LaneSettings& s)
+{
+    const Wide rate = select(block.againstStatic, s.staticRate, s.dynamicRate);
+    const Wide mass = select(block.againstStatic, s.staticMass, s.dynamicMass);
+    return {mass * rate, mass, select(block.againstStatic, s.staticImpulse, s.dynamicImpulse)};
+}
+
+/// What a point's normal row aims at in this pass: the gap's target speed and the soft scales,
+/// the first half of solveNormal (soft_contact_solver.cpp) lane by lane, the same operations in
+/// the same order. The gap is the same on the way forth and back, so it is found once a pass.
+struct LaneTarget {
+    Wide bias, massScale, impulseScale;
+};
+
+TUMBLE_WIDE_INLINE LaneTarget targetOf(const LanePoint& p, const LaneMotion& motion,
+                                       const LaneSoftness& soft, const LaneSettings& s)
+{
+    const Wide gap = motion.centres + dot(motion.normalB, p.anchorB) -
+                     dot(motion.normalA, p.anchorA) + p.baseSeparation;
+    const Mask speculative = less(splat(0.0), gap);
+    const Mask biased = s.useBias ? ~speculative : Mask{};
+    const Wide softBias = maximum(soft.massRate * gap, s.pushLimit);
+    return {select(speculative, gap * s.inverseSubstep, select(biased, softBias, splat(0.0))),
+            select(biased, soft.mass, splat(1.0)), select(biased, soft.impulse, splat(0.0))};
+}
+
+/// The rest of solveNormal for point k lane by lane, the same operations in the same order: a
+/// lane whose manifold has no point k changes nothing.
+TUMBLE_WIDE_INLINE void solveNormal(LaneBlock& block, int k, const LaneTarget& t,
+                                    LaneNormalVelocities& u)
+{
+    LanePoint& p = block.points[k];
+    const Wide normalBefore = u.at[k];
+    const Wide impulse = -p.normalMass * (t.massScale * normalBefore + t.bias) -
+                         t.impulseScale * p.normalImpulse;
+    const Wide accumulated = maximum(p.normalImpulse + impulse, splat(0.0));
+    const Wide applied = accumulated - p.normalImpulse;
+    const Mask active = p.active;
+#pragma GCC unroll 4
+    for (int i = 0; i < 4; ++i) {
+        const Wide coupling = i == k ? p.normalK : block.normalCoupling[couplingIndex(i, k)];
+        u.at[i] = select(active, u.at[i] + coupling * applied, u.at[i]);
+    }
+    const Wide work = applied * (normalBefore + splat(0.5) * applied / p.normalMass);
+    p.normalImpulse = select(active, accumulated, p.normalImpulse);
+    p.maxNormalImpulse = select(active, maximum(p.maxNormalImpulse, applied), p.maxNormalImpulse);
+    p.normalWork = select(active, p.normalWork + work, p.normalWork);
+}
+
+/// solveFriction (soft_contact_solver.cpp) lane by lane, the same operations in the same order.
+TUMBLE_WIDE_INLINE void solveFriction(LaneBlock& block, LaneVelocities& v)
+{
+    Wide load = splat(0.0);
+    Wide twistLimit = splat(0.0);
+    for (const LanePoint& p : block.points) {
+        load = select(p.active, load + p.normalImpulse, load);
+        twistLimit = select(p.active, twistLimit + p.leverArm * p.normalImpulse, twistLimit);
+    }
+    twistLimit = twistLimit * block.friction;
+    const Wide spin = dot(block.normal, minus(v.wB, v.wA));
+    const Wide free = block.twistImpulse - block.twistMass * spin;
+    const Wide low = -twistLimit;
+    const Wide twist = select(less(free, low), low, select(less(twistLimit, free), twistLimit, free));
+    const Wide twistApplied = twist - block.twistImpulse;
+    block.twistImpulse = twist;
+    applyTwist(block, twistApplied, v);
+    block.frictionWork =
+        block.frictionWork + twistApplied * (spin + splat(0.5) * block.twistK * twistApplied);
+
+    const Wide slip1 = dot(block.tangent1, minus(v.vB, v.vA)) + dot(block.angularB1, v.wB) -
+                       dot(block.angularA1, v.wA);
+    const Wide slip2 = dot(block.tangent2, minus(v.vB, v.vA)) + dot(block.angularB2, v.wB) -
+                       dot(block.angularA2, v.wA);
+    const Wide(&mt)[3] = block.tangentMass;
+    Wide next1 = block.frictionImpulse1 - (mt[0] * slip1 + mt[1] * slip2);
+    Wide next2 = block.frictionImpulse2 - (mt[1] * slip1 + mt[2] * slip2);
+    const Wide limit = block.friction * load;
+    const Wide size = squareRoot(next1 * next1 + next2 * next2);
+    const Mask outside = less(limit, size);
+    const Wide shrink = select(less(splat(0.0), size), limit / size, splat(0.0));
+    next1 = select(outside, next1 * shrink, next1);
+    next2 = select(outside, next2 * shrink, next2);
+    const Wide d1 = next1 - block.frictionImpulse1;
+    const Wide d2 = next2 - block.frictionImpulse2;
+    block.frictionImpulse1 = next1;
+    block.frictionImpulse2 = next2;
+    applyFriction(block, d1, d2, v);
+    const Wide(&kt)[3] = block.tangentK;
+    const Wide change1 = kt[0] * d1 + kt[1] * d2;
+    const Wide change2 = kt[1] * d1 + kt[2] * d2;
+    block.frictionWork = block.frictionWork + (d1 * (slip1 + splat(0.5) * change1) +
+                                               d2 * (slip2 + splat(0.5) * change2));
+}
+
+} // namespace tumble::soft_rows
