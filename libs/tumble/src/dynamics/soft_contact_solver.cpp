@@ -96,8 +96,9 @@ void solveFriction(SoftPair& pair, SoftManifold& m)
     pair.applyTwist(m, twistApplied);
     m.frictionWork += twistApplied * (spin + 0.5 * m.twistK * twistApplied);
 
-    const Real slip1 = pair.slip(m.tangent1, m.angularA1, m.angularB1);
-    const Real slip2 = pair.slip(m.tangent2, m.angularA2, m.angularB2);
+    const Vec3 sliding = pair.centreVelocity(m);
+    const Real slip1 = glm::dot(m.tangent1, sliding);
+    const Real slip2 = glm::dot(m.tangent2, sliding);
     const auto& mt = m.tangentMass;
     Real next1 = m.frictionImpulse1 - (mt[0] * slip1 + mt[1] * slip2);
     Real next2 = m.frictionImpulse2 - (mt[1] * slip1 + mt[2] * slip2);
@@ -132,9 +133,8 @@ void warmStartSoft(std::span<const SoftManifold> manifolds, std::span<SoftBody> 
         for (int k = 0; k < m.pointCount; ++k) {
             impulses[k] = m.points[k].normalImpulse;
         }
-        pair.applyNormals(m, impulses);
-        pair.applyTwist(m, m.twistImpulse);
-        pair.applyFriction(m, m.frictionImpulse1, m.frictionImpulse2);
+        pair.applyAccumulated(m, impulses, m.twistImpulse, m.frictionImpulse1,
+                              m.frictionImpulse2);
         pair.store();
     }, lanes, inLanes);
 }
@@ -148,10 +148,9 @@ void solveSoft(std::span<SoftManifold> manifolds, std::span<SoftBody> bodies,
         SoftManifold& m = manifolds[index];
         SoftPair pair(bodies[m.bodyA], bodies[m.bodyB]);
         const SoftMotion motion(m, pair.a, pair.b);
-        std::array<Real, 4> u{};
+        std::array<Real, 4> u = pair.normalVelocities(m);
         std::array<Real, 4> before{};
         for (int k = 0; k < m.pointCount; ++k) {
-            u[k] = pair.normalVelocity(m.normal, m.points[k]);
             before[k] = m.points[k].normalImpulse;
         }
         // (12.4): forth and back over the points, so that a face's impulses carry no bias of

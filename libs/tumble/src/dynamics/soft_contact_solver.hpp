@@ -89,13 +89,8 @@ struct SoftManifold {
     /// The points' centre as offsets from each centre of mass, m.
     Vec3 centreA{0.0};
     Vec3 centreB{0.0};
-    /// The friction rows' angular parts at the centre, c_A x t_i and c_B x t_i (their images
-    /// under the inverse inertias are formed where an impulse is applied, (12.4a)), and the
-    /// twist row's I_A^-1 n and I_B^-1 n (11.2).
-    Vec3 angularA1{0.0};
-    Vec3 angularA2{0.0};
-    Vec3 angularB1{0.0};
-    Vec3 angularB2{0.0};
+    /// The twist row's I_A^-1 n and I_B^-1 n (11.2). The friction rows are applied and read
+    /// through the centres (12.5a).
     Vec3 twistResponseA{0.0};
     Vec3 twistResponseB{0.0};
     /// K_t at the centre over (t1, t2) and its inverse, as (11, 12, 22) (11.3).

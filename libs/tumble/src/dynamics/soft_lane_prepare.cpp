@@ -26,20 +26,19 @@ TUMBLE_WIDE_INLINE WideMat3 inverseInertias(const std::array<std::uint32_t, kLan
     return m;
 }
 
+/// A point's normal row's angular parts r x n and their images I^-1 (r x n) on each side.
+struct LaneRow {
+    LaneAngular angular;
+    Wide3 responseA, responseB;
+};
+
 /// A point's normal row (11.2) and lever arm (12.5), where the point is present.
-TUMBLE_WIDE_INLINE void preparePoint(const LaneBlock& block, LanePoint& p,
-                                     const LaneCentres& centres, const WideMat3& inertiaA,
-                                     const WideMat3& inertiaB)
+TUMBLE_WIDE_INLINE void preparePoint(const LaneBlock& block, LanePoint& p, const LaneRow& row)
 {
-    const LaneAngular angular = pointAngular(block, p);
-    const Wide3& angularA = angular.a;
-    const Wide3& angularB = angular.b;
-    const Wide3 responseA = times(inertiaA, angularA);
-    const Wide3 responseB = times(inertiaB, angularB);
-    const Wide k = block.invMassA + block.invMassB + dot(angularA, responseA) +
-                   dot(angularB, responseB);
+    const Wide k = block.invMassA + block.invMassB + dot(row.angular.a, row.responseA) +
+                   dot(row.angular.b, row.responseB);
     const Wide mass = select(less(splat(0.0), k), splat(1.0) / k, splat(0.0));
-    const Wide3 fromCentre = minus(p.anchorB, centres.b);
+    const Wide3 fromCentre = minus(p.anchorB, block.centreB);
     const Wide3 inPlane = minus(fromCentre, scaled(block.normal, dot(fromCentre, block.normal)));
     const Mask present = p.active;
     p.normalK = select(present, k, p.normalK);
@@ -50,46 +49,45 @@ TUMBLE_WIDE_INLINE void preparePoint(const LaneBlock& block, LanePoint& p,
 } // namespace
 
 TUMBLE_WIDE_CLONES
-void prepareLaneRows(LaneBlock& block, const LaneCentres& centres,
-                     std::span<const SoftBody> bodies)
+void prepareLaneRows(LaneBlock& block, std::span<const SoftBody> bodies)
 {
     const WideMat3 inertiaA = inverseInertias(block.bodyA, bodies);
     const WideMat3 inertiaB = inverseInertias(block.bodyB, bodies);
-    for (LanePoint& p : block.points) {
-        preparePoint(block, p, centres, inertiaA, inertiaB);
+    LaneRow rows[4];
+    for (int k = 0; k < 4; ++k) {
+        LanePoint& p = block.points[k];
+        rows[k].angular = pointAngular(block, p);
+        rows[k].responseA = times(inertiaA, rows[k].angular.a);
+        rows[k].responseB = times(inertiaB, rows[k].angular.b);
+        preparePoint(block, p, rows[k]);
     }
     // (12.4): the couplings of each two points, where both are present
     for (int i = 0; i < 4; ++i) {
         for (int j = i + 1; j < 4; ++j) {
-            const LaneAngular angular = pointAngular(block, block.points[i]);
-            const LaneAngular other = pointAngular(block, block.points[j]);
             const Wide coupling = block.invMassA + block.invMassB +
-                                  dot(angular.a, times(inertiaA, other.a)) +
-                                  dot(angular.b, times(inertiaB, other.b));
+                                  dot(rows[i].angular.a, rows[j].responseA) +
+                                  dot(rows[i].angular.b, rows[j].responseB);
             Wide& kept = block.normalCoupling[couplingIndex(i, j)];
             kept = select(block.points[j].active, coupling, kept);
         }
     }
-    block.angularA1 = cross(centres.a, block.tangent1);
-    block.angularA2 = cross(centres.a, block.tangent2);
-    block.angularB1 = cross(centres.b, block.tangent1);
-    block.angularB2 = cross(centres.b, block.tangent2);
+    const Wide3 angularA1 = cross(block.centreA, block.tangent1);
+    const Wide3 angularA2 = cross(block.centreA, block.tangent2);
+    const Wide3 angularB1 = cross(block.centreB, block.tangent1);
+    const Wide3 angularB2 = cross(block.centreB, block.tangent2);
     block.inertiaA = inertiaA;
     block.inertiaB = inertiaB;
-    const Wide3 responseA1 = times(inertiaA, block.angularA1);
-    const Wide3 responseA2 = times(inertiaA, block.angularA2);
-    const Wide3 responseB1 = times(inertiaB, block.angularB1);
-    const Wide3 responseB2 = times(inertiaB, block.angularB2);
+    const Wide3 responseA1 = times(inertiaA, angularA1);
+    const Wide3 responseA2 = times(inertiaA, angularA2);
+    const Wide3 responseB1 = times(inertiaB, angularB1);
+    const Wide3 responseB2 = times(inertiaB, angularB2);
     block.twistResponseA = times(inertiaA, block.normal);
     block.twistResponseB = times(inertiaB, block.normal);
     // (11.3) at the centre
     const Wide massSum = block.invMassA + block.invMassB;
-    const Wide k11 = massSum + dot(block.angularA1, responseA1) +
-                     dot(block.angularB1, responseB1);
-    const Wide k12 =
-        dot(block.angularA1, responseA2) + dot(block.angularB1, responseB2);
-    const Wide k22 = massSum + dot(block.angularA2, responseA2) +
-                     dot(block.angularB2, responseB2);
+    const Wide k11 = massSum + dot(angularA1, responseA1) + dot(angularB1, responseB1);
+    const Wide k12 = dot(angularA1, responseA2) + dot(angularB1, responseB2);
+    const Wide k22 = massSum + dot(angularA2, responseA2) + dot(angularB2, responseB2);
     block.tangentK[0] = k11;
     block.tangentK[1] = k12;
     block.tangentK[2] = k22;

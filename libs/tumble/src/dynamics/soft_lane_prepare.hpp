@@ -8,16 +8,10 @@
 
 namespace tumble::soft_rows {
 
-/// The points' centres of each lane's manifold as offsets from each centre of mass, m.
-struct LaneCentres {
-    Wide3 a, b;
-};
-
 /// prepareSoftRows (soft_rows.cpp) lane by lane, the same operations in the same order,
-/// for a block whose anchors, normal, tangents, inverse masses and points' `active` are packed:
-/// each present point's angular parts, responses, effective mass and lever arm, and the friction
-/// and twist rows at the centres. An absent point keeps its empty rows (unit mass).
-void prepareLaneRows(LaneBlock& block, const LaneCentres& centres,
-                     std::span<const SoftBody> bodies);
+/// for a block whose anchors, centres, normal, tangents, inverse masses and points' `active`
+/// are packed: each present point's effective mass and lever arm, the couplings, and the
+/// friction and twist rows at the centres. An absent point keeps its empty rows (unit mass).
+void prepareLaneRows(LaneBlock& block, std::span<const SoftBody> bodies);
 
 } // namespace tumble::soft_rows

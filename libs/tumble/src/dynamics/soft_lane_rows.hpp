@@ -16,8 +16,8 @@ namespace tumble::soft_rows {
 using namespace lanes;
 
 /// The k-th point of each lane's manifold, or nothing (`active` clear, the point's rows zero).
-/// Its angular rows r x n are formed from the anchors where a pass needs them (pointAngular):
-/// a block is read twelve times a step, and its size is what the pass waits on.
+/// The passes work from its anchors ((12.4b): its rows r x n are not kept): a block is read
+/// twelve times a step, and its size is what the pass waits on.
 struct LanePoint {
     Wide3 anchorA, anchorB;
     Wide baseSeparation, normalK, normalMass, leverArm, normalImpulse, maxNormalImpulse,
@@ -42,7 +42,8 @@ TUMBLE_WIDE_INLINE Wide3 times(const WideMat3& m, const Wide3& v)
 /// every row zero.
 struct LaneBlock {
     Wide3 normal, tangent1, tangent2;
-    Wide3 angularA1, angularA2, angularB1, angularB2;
+    /// The points' centre as offsets from each centre of mass: where friction acts (12.5a).
+    Wide3 centreA, centreB;
     Wide3 twistResponseA, twistResponseB;
     WideMat3 inertiaA, inertiaB;
     Wide normalCoupling[6];
@@ -115,55 +116,93 @@ TUMBLE_WIDE_INLINE LaneAngular pointAngular(const LaneBlock& block, const LanePo
     return {cross(p.anchorA, block.normal), cross(p.anchorB, block.normal)};
 }
 
-/// The normal impulses of the four points at once: their sum along n, their moments through
-/// the inverse inertias.
-TUMBLE_WIDE_INLINE void applyNormals(const LaneBlock& block, const Wide (&impulse)[4],
-                                     LaneVelocities& v)
+/// Each lane's sums of its points' impulses, sum_k lambda_k, and of their levers, sum_k lambda_k
+/// r_k on each side, as SoftPair::applyNormals forms them.
+struct LaneLevers {
+    Wide total;
+    Wide3 a, b;
+};
+
+TUMBLE_WIDE_INLINE LaneLevers leversOf(const LaneBlock& block, const Wide (&impulse)[4])
 {
-    Wide total = splat(0.0);
-    Wide3 momentA{splat(0.0), splat(0.0), splat(0.0)};
-    Wide3 momentB = momentA;
+    LaneLevers sums{splat(0.0), {splat(0.0), splat(0.0), splat(0.0)},
+                    {splat(0.0), splat(0.0), splat(0.0)}};
     for (int k = 0; k < 4; ++k) {
         const LanePoint& p = block.points[k];
         const Wide share = select(p.active, impulse[k], splat(0.0));
-        const LaneAngular angular = pointAngular(block, p);
-        total = total + share;
-        momentA = {momentA.x + share * angular.a.x, momentA.y + share * angular.a.y,
-                   momentA.z + share * angular.a.z};
-        momentB = {momentB.x + share * angular.b.x, momentB.y + share * angular.b.y,
-                   momentB.z + share * angular.b.z};
+        sums.total = sums.total + share;
+        sums.a = {sums.a.x + share * p.anchorA.x, sums.a.y + share * p.anchorA.y,
+                  sums.a.z + share * p.anchorA.z};
+        sums.b = {sums.b.x + share * p.anchorB.x, sums.b.y + share * p.anchorB.y,
+                  sums.b.z + share * p.anchorB.z};
     }
-    addScaled(v.vA, block.invMassA * total, block.normal, false);
-    const Wide3 turnA = times(block.inertiaA, momentA);
-    v.wA = {v.wA.x - turnA.x, v.wA.y - turnA.y, v.wA.z - turnA.z};
-    addScaled(v.vB, block.invMassB * total, block.normal, true);
-    const Wide3 turnB = times(block.inertiaB, momentB);
-    v.wB = {v.wB.x + turnB.x, v.wB.y + turnB.y, v.wB.z + turnB.z};
+    return sums;
 }
 
-/// SoftPair::applyTwist and SoftPair::applyFriction.
+TUMBLE_WIDE_INLINE Wide3 plus(const Wide3& a, const Wide3& b)
+{
+    return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+
+/// The normal impulses of the four points at once: their sum along n, their moments
+/// (sum_k lambda_k r_k) x n through the inverse inertias (12.4b).
+TUMBLE_WIDE_INLINE void applyNormals(const LaneBlock& block, const Wide (&impulse)[4],
+                                     LaneVelocities& v)
+{
+    const LaneLevers sums = leversOf(block, impulse);
+    addScaled(v.vA, block.invMassA * sums.total, block.normal, false);
+    v.wA = minus(v.wA, times(block.inertiaA, cross(sums.a, block.normal)));
+    addScaled(v.vB, block.invMassB * sums.total, block.normal, true);
+    v.wB = plus(v.wB, times(block.inertiaB, cross(sums.b, block.normal)));
+}
+
+/// SoftPair::applyTwist.
 TUMBLE_WIDE_INLINE void applyTwist(const LaneBlock& block, Wide twist, LaneVelocities& v)
 {
     addScaled(v.wA, twist, block.twistResponseA, false);
     addScaled(v.wB, twist, block.twistResponseB, true);
 }
 
+/// d1 t1 + d2 t2 of each lane.
+TUMBLE_WIDE_INLINE Wide3 frictionImpulse(const LaneBlock& block, Wide d1, Wide d2)
+{
+    return {d1 * block.tangent1.x + d2 * block.tangent2.x,
+            d1 * block.tangent1.y + d2 * block.tangent2.y,
+            d1 * block.tangent1.z + d2 * block.tangent2.z};
+}
+
+/// SoftPair::applyFriction: P = d1 t1 + d2 t2 at the centres, its moments c x P (12.5a).
 TUMBLE_WIDE_INLINE void applyFriction(const LaneBlock& block, Wide d1, Wide d2,
                                       LaneVelocities& v)
 {
-    const Wide3 impulse{d1 * block.tangent1.x + d2 * block.tangent2.x,
-                        d1 * block.tangent1.y + d2 * block.tangent2.y,
-                        d1 * block.tangent1.z + d2 * block.tangent2.z};
-    const Wide3 turnA = times(block.inertiaA, Wide3{d1 * block.angularA1.x + d2 * block.angularA2.x,
-                      d1 * block.angularA1.y + d2 * block.angularA2.y,
-                      d1 * block.angularA1.z + d2 * block.angularA2.z});
-    const Wide3 turnB = times(block.inertiaB, Wide3{d1 * block.angularB1.x + d2 * block.angularB2.x,
-                      d1 * block.angularB1.y + d2 * block.angularB2.y,
-                      d1 * block.angularB1.z + d2 * block.angularB2.z});
+    const Wide3 impulse = frictionImpulse(block, d1, d2);
     addScaled(v.vA, block.invMassA, impulse, false);
-    v.wA = minus(v.wA, turnA);
+    v.wA = minus(v.wA, times(block.inertiaA, cross(block.centreA, impulse)));
     addScaled(v.vB, block.invMassB, impulse, true);
-    v.wB = {v.wB.x + turnB.x, v.wB.y + turnB.y, v.wB.z + turnB.z};
+    v.wB = plus(v.wB, times(block.inertiaB, cross(block.centreB, impulse)));
+}
+
+/// SoftPair::applyAccumulated: the warm start's impulses of each lane, one linear impulse and
+/// one moment a body.
+TUMBLE_WIDE_INLINE void applyAccumulated(const LaneBlock& block, LaneVelocities& v)
+{
+    const Wide impulses[4] = {block.points[0].normalImpulse, block.points[1].normalImpulse,
+                              block.points[2].normalImpulse, block.points[3].normalImpulse};
+    const LaneLevers sums = leversOf(block, impulses);
+    const Wide3 friction = frictionImpulse(block, block.frictionImpulse1, block.frictionImpulse2);
+    const Wide3 linear{sums.total * block.normal.x + friction.x,
+                       sums.total * block.normal.y + friction.y,
+                       sums.total * block.normal.z + friction.z};
+    const Wide3 twist{block.twistImpulse * block.normal.x, block.twistImpulse * block.normal.y,
+                      block.twistImpulse * block.normal.z};
+    addScaled(v.vA, block.invMassA, linear, false);
+    v.wA = minus(v.wA, times(block.inertiaA, plus(plus(cross(sums.a, block.normal),
+                                                       cross(block.centreA, friction)),
+                                                  twist)));
+    addScaled(v.vB, block.invMassB, linear, true);
+    v.wB = plus(v.wB, times(block.inertiaB, plus(plus(cross(sums.b, block.normal),
+                                                      cross(block.centreB, friction)),
+                                                 twist)));
 }
 
 } // namespace tumble::soft_rows

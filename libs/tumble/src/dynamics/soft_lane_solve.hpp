@@ -36,8 +36,8 @@ struct LaneSettings {
     bool useBias;
 };
 
-/// The normal velocities of the four points of each lane, n . (vB - vA) + (rB x n) . wB -
-/// (rA x n) . wA, as SoftPair::normalVelocity forms them.
+/// The normal velocities of the four points of each lane, n . (vB - vA) + rB . (n x wB) -
+/// rA . (n x wA), as SoftPair::normalVelocities forms them (12.4b).
 struct LaneNormalVelocities {
     Wide at[4];
 };
@@ -45,11 +45,13 @@ struct LaneNormalVelocities {
 TUMBLE_WIDE_INLINE LaneNormalVelocities normalVelocities(const LaneBlock& block,
                                                          const LaneVelocities& v)
 {
+    const Wide along = dot(block.normal, minus(v.vB, v.vA));
+    const Wide3 turnA = cross(block.normal, v.wA);
+    const Wide3 turnB = cross(block.normal, v.wB);
     LaneNormalVelocities u;
     for (int k = 0; k < 4; ++k) {
-        const LaneAngular angular = pointAngular(block, block.points[k]);
-        u.at[k] = dot(block.normal, minus(v.vB, v.vA)) + dot(angular.b, v.wB) -
-                  dot(angular.a, v.wA);
+        const LanePoint& p = block.points[k];
+        u.at[k] = along + dot(p.anchorB, turnB) - dot(p.anchorA, turnA);
     }
     return u;
 }
@@ -128,10 +130,11 @@ TUMBLE_WIDE_INLINE void solveFriction(LaneBlock& block, LaneVelocities& v)
     block.frictionWork =
         block.frictionWork + twistApplied * (spin + splat(0.5) * block.twistK * twistApplied);
 
-    const Wide slip1 = dot(block.tangent1, minus(v.vB, v.vA)) + dot(block.angularB1, v.wB) -
-                       dot(block.angularA1, v.wA);
-    const Wide slip2 = dot(block.tangent2, minus(v.vB, v.vA)) + dot(block.angularB2, v.wB) -
-                       dot(block.angularA2, v.wA);
+    // SoftPair::centreVelocity (12.5a)
+    const Wide3 sliding = minus(plus(v.vB, cross(v.wB, block.centreB)),
+                                plus(v.vA, cross(v.wA, block.centreA)));
+    const Wide slip1 = dot(block.tangent1, sliding);
+    const Wide slip2 = dot(block.tangent2, sliding);
     const Wide(&mt)[3] = block.tangentMass;
     Wide next1 = block.frictionImpulse1 - (mt[0] * slip1 + mt[1] * slip2);
     Wide next2 = block.frictionImpulse2 - (mt[1] * slip1 + mt[2] * slip2);

@@ -36,14 +36,13 @@ void packPoint(LanePoint& p, int lane, const SoftPoint& from)
 }
 
 /// What a manifold brings to its lane; its rows are built in the lanes (prepareLaneRows).
-void packLane(LaneBlock& block, LaneCentres& centres, int lane, const SoftManifold& m,
-              std::span<const SoftBody> bodies)
+void packLane(LaneBlock& block, int lane, const SoftManifold& m, std::span<const SoftBody> bodies)
 {
     lanes::setLane(block.normal, lane, m.normal);
     lanes::setLane(block.tangent1, lane, m.tangent1);
     lanes::setLane(block.tangent2, lane, m.tangent2);
-    lanes::setLane(centres.a, lane, m.centreA);
-    lanes::setLane(centres.b, lane, m.centreB);
+    lanes::setLane(block.centreA, lane, m.centreA);
+    lanes::setLane(block.centreB, lane, m.centreB);
     block.friction[lane] = m.friction;
     block.frictionImpulse1[lane] = m.frictionImpulse1;
     block.frictionImpulse2[lane] = m.frictionImpulse2;
@@ -117,11 +116,7 @@ void warmStartBlocks(std::span<const LaneBlock> blocks, std::span<SoftBody> bodi
 {
     for (const LaneBlock& block : blocks) {
         LaneVelocities v = gather(block, bodies);
-        const Wide impulses[4] = {block.points[0].normalImpulse, block.points[1].normalImpulse,
-                                  block.points[2].normalImpulse, block.points[3].normalImpulse};
-        applyNormals(block, impulses, v);
-        applyTwist(block, block.twistImpulse, v);
-        applyFriction(block, block.frictionImpulse1, block.frictionImpulse2, v);
+        applyAccumulated(block, v);
         scatter(block, v, bodies);
     }
 }
@@ -175,16 +170,15 @@ void SoftLanes::pack(const ManifoldSource& source, const SoftColours& colours,
         LaneBlock& block = storage.blocks[b];
         emptyBlock(block, staticIndex);
         block.lanes = storage.laneCount[b];
-        LaneCentres centres{};
         for (std::uint32_t lane = 0; lane < block.lanes; ++lane) {
             const std::uint32_t index = storage.firstManifold[b] + lane;
             const SoftManifold m = source(index);
             block.manifold[lane] = index;
             block.bodyA[lane] = m.bodyA;
             block.bodyB[lane] = m.bodyB;
-            packLane(block, centres, static_cast<int>(lane), m, bodies);
+            packLane(block, static_cast<int>(lane), m, bodies);
         }
-        prepareLaneRows(block, centres, bodies);
+        prepareLaneRows(block, bodies);
     });
 }
 

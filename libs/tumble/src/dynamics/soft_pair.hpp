@@ -25,44 +25,84 @@ struct SoftPair {
     {
     }
 
-    /// The sliding velocity at the centre along t1 and t2: t_i . (vB - vA) + (c_B x t_i) . wB -
-    /// (c_A x t_i) . wA (11.1).
-    [[nodiscard]] Real slip(const Vec3& tangent, const Vec3& angularA, const Vec3& angularB) const
+    /// The velocity of B relative to A at the manifold's centre, (vB + wB x cB) - (vA + wA x cA):
+    /// its components along t1 and t2 are the friction rows' slips, t_i . (vB - vA) + (cB x t_i)
+    /// . wB - (cA x t_i) . wA (11.1), as (c x t) . w = t . (w x c) (12.5a).
+    [[nodiscard]] Vec3 centreVelocity(const SoftManifold& m) const
     {
-        return glm::dot(tangent, vB - vA) + glm::dot(angularB, wB) - glm::dot(angularA, wA);
+        return (vB + glm::cross(wB, m.centreB)) - (vA + glm::cross(wA, m.centreA));
     }
 
-    /// The friction impulse d1 t1 + d2 t2 at the centre, through its rows' images under the
-    /// inverse inertias.
+    /// The friction impulse P = d1 t1 + d2 t2 at the centre: its moments are c x P (12.5a).
     void applyFriction(const SoftManifold& m, Real d1, Real d2)
     {
         const Vec3 impulse = d1 * m.tangent1 + d2 * m.tangent2;
         vA -= a.invMass * impulse;
-        wA -= a.invInertia * (d1 * m.angularA1 + d2 * m.angularA2);
+        wA -= a.invInertia * glm::cross(m.centreA, impulse);
         vB += b.invMass * impulse;
-        wB += b.invInertia * (d1 * m.angularB1 + d2 * m.angularB2);
+        wB += b.invInertia * glm::cross(m.centreB, impulse);
     }
 
-    /// The normal impulses of a manifold's points at once: their sum along n, and the sum of
-    /// their moments r x n through each inverse inertia (one product a side, not one a point).
+    /// The normal impulses of a manifold's points at once: their sum along n, and their moments
+    /// sum_k lambda_k (r_k x n) = (sum_k lambda_k r_k) x n through each inverse inertia (12.4b).
     void applyNormals(const SoftManifold& m, const std::array<Real, 4>& impulse)
     {
         Real total = 0.0;
-        Vec3 momentA(0.0);
-        Vec3 momentB(0.0);
+        Vec3 leverA(0.0);
+        Vec3 leverB(0.0);
         for (int k = 0; k < m.pointCount; ++k) {
             total = total + impulse[k];
-            momentA = momentA + impulse[k] * m.points[k].angularA;
-            momentB = momentB + impulse[k] * m.points[k].angularB;
+            leverA = leverA + impulse[k] * m.points[k].anchorA;
+            leverB = leverB + impulse[k] * m.points[k].anchorB;
         }
         vA -= (a.invMass * total) * m.normal;
-        wA -= a.invInertia * momentA;
+        wA -= a.invInertia * glm::cross(leverA, m.normal);
         vB += (b.invMass * total) * m.normal;
-        wB += b.invInertia * momentB;
+        wB += b.invInertia * glm::cross(leverB, m.normal);
     }
 
-    /// The normal velocity at a point from its angular rows (12.4): n . (vB - vA) + (rB x n) . wB
-    /// - (rA x n) . wA.
+    /// A manifold's accumulated impulses at once (the warm start, (12.5)): the normal ones, the
+    /// twist tau n and the friction P, one linear impulse and one moment a body (12.4b), (12.5a).
+    void applyAccumulated(const SoftManifold& m, const std::array<Real, 4>& impulse, Real twist,
+                          Real f1, Real f2)
+    {
+        Real total = 0.0;
+        Vec3 leverA(0.0);
+        Vec3 leverB(0.0);
+        for (int k = 0; k < m.pointCount; ++k) {
+            total = total + impulse[k];
+            leverA = leverA + impulse[k] * m.points[k].anchorA;
+            leverB = leverB + impulse[k] * m.points[k].anchorB;
+        }
+        const Vec3 friction = f1 * m.tangent1 + f2 * m.tangent2;
+        const Vec3 linear = total * m.normal + friction;
+        const Vec3 twistMoment = twist * m.normal;
+        vA -= a.invMass * linear;
+        wA -= a.invInertia * (glm::cross(leverA, m.normal) + glm::cross(m.centreA, friction) +
+                              twistMoment);
+        vB += b.invMass * linear;
+        wB += b.invInertia * (glm::cross(leverB, m.normal) + glm::cross(m.centreB, friction) +
+                              twistMoment);
+    }
+
+    /// The normal velocities of a manifold's points (12.4b): n . (vB - vA) + (rB x n) . wB -
+    /// (rA x n) . wA = n . (vB - vA) + rB . (n x wB) - rA . (n x wA), the first term and the
+    /// two turns formed once for the manifold.
+    [[nodiscard]] std::array<Real, 4> normalVelocities(const SoftManifold& m) const
+    {
+        const Real along = glm::dot(m.normal, vB - vA);
+        const Vec3 turnA = glm::cross(m.normal, wA);
+        const Vec3 turnB = glm::cross(m.normal, wB);
+        std::array<Real, 4> u{};
+        for (int k = 0; k < m.pointCount; ++k) {
+            u[k] = along + glm::dot(m.points[k].anchorB, turnB) -
+                   glm::dot(m.points[k].anchorA, turnA);
+        }
+        return u;
+    }
+
+    /// The normal velocity at a point from its angular rows (restitution, (12.6)): n . (vB - vA)
+    /// + (rB x n) . wB - (rA x n) . wA.
     [[nodiscard]] Real normalVelocity(const Vec3& normal, const SoftPoint& p) const
     {
         return glm::dot(normal, vB - vA) + glm::dot(p.angularB, wB) - glm::dot(p.angularA, wA);

@@ -59,23 +59,23 @@ void prepareSoftRows(SoftManifold& m, std::span<const SoftBody> bodies)
                                                     glm::dot(p.angularB, q.responseB);
         }
     }
-    m.angularA1 = glm::cross(m.centreA, m.tangent1);
-    m.angularA2 = glm::cross(m.centreA, m.tangent2);
-    m.angularB1 = glm::cross(m.centreB, m.tangent1);
-    m.angularB2 = glm::cross(m.centreB, m.tangent2);
-    const Vec3 responseA1 = a.invInertia * m.angularA1;
-    const Vec3 responseA2 = a.invInertia * m.angularA2;
-    const Vec3 responseB1 = b.invInertia * m.angularB1;
-    const Vec3 responseB2 = b.invInertia * m.angularB2;
+    const Vec3 angularA1 = glm::cross(m.centreA, m.tangent1);
+    const Vec3 angularA2 = glm::cross(m.centreA, m.tangent2);
+    const Vec3 angularB1 = glm::cross(m.centreB, m.tangent1);
+    const Vec3 angularB2 = glm::cross(m.centreB, m.tangent2);
+    const Vec3 responseA1 = a.invInertia * angularA1;
+    const Vec3 responseA2 = a.invInertia * angularA2;
+    const Vec3 responseB1 = b.invInertia * angularB1;
+    const Vec3 responseB2 = b.invInertia * angularB2;
     m.twistResponseA = a.invInertia * m.normal;
     m.twistResponseB = b.invInertia * m.normal;
     // (11.3) at the centre: K_ij = (mA + mB) t_i . t_j + (cA x t_i) . IA^-1 (cA x t_j) + ...
     const Real massSum = a.invMass + b.invMass;
-    const Real k11 = massSum + glm::dot(m.angularA1, responseA1) +
-                     glm::dot(m.angularB1, responseB1);
-    const Real k12 = glm::dot(m.angularA1, responseA2) + glm::dot(m.angularB1, responseB2);
-    const Real k22 = massSum + glm::dot(m.angularA2, responseA2) +
-                     glm::dot(m.angularB2, responseB2);
+    const Real k11 = massSum + glm::dot(angularA1, responseA1) +
+                     glm::dot(angularB1, responseB1);
+    const Real k12 = glm::dot(angularA1, responseA2) + glm::dot(angularB1, responseB2);
+    const Real k22 = massSum + glm::dot(angularA2, responseA2) +
+                     glm::dot(angularB2, responseB2);
     m.tangentK = {k11, k12, k22};
     const Real determinant = k11 * k22 - k12 * k12;
     m.tangentMass = determinant > 0.0 ? std::array<Real, 3>{k22 / determinant,
