@@ -4,12 +4,12 @@
 #include "step/soft_step.hpp"
 
 #include "body_state.hpp"
-#include "dynamics/constraint_colouring.hpp"
 #include "dynamics/energy_booking.hpp"
 #include "dynamics/soft_contact_solver.hpp"
 #include "dynamics/soft_lanes.hpp"
 #include "dynamics/solver_point.hpp"
 #include "step/island_contacts.hpp"
+#include "step/soft_contact_order.hpp"
 #include "step/soft_manifolds.hpp"
 #include "step/soft_warm_start.hpp"
 #include "parallel_for.hpp"
@@ -23,21 +23,19 @@ namespace {
 
 /// The vectors of an island's soft step, kept by each thread from step to step.
 struct SoftBuffers {
+    /// The island's contacts in the narrow phase's order, owner after owner.
     std::vector<IslandContact> contacts;
     std::vector<Vec3> centres;
     /// The manifolds of the overflow group from its first, or of every contact of an island
     /// not in lanes.
     std::vector<SoftManifold> manifolds;
     std::vector<SoftContactResult> results;
-    SoftColours colours;
+    SoftContactOrder order;
     SoftLanes lanes;
     /// Whether this step's colours are packed in `lanes`.
     bool inLanes = false;
-    std::vector<IslandContact> spareContacts;
-    /// Each contact's two solver bodies: in the narrow phase's order, then in colour order.
-    std::vector<ProxyPair> ends;
-    std::vector<ProxyPair> colourEnds;
-    std::vector<std::uint8_t> isStatic;
+    /// What each contact's owner kept of it, in the contacts' order.
+    std::vector<KeptImpulses> kept;
     std::vector<SoftBody> bodies;
     std::vector<Real> energies;
     std::vector<Real> kineticStart;
@@ -69,7 +67,6 @@ public:
 
 private:
     void prepare(Real dt);
-    void orderByColour();
     /// (12.3) and (12.5): contact k's manifold, started from its owner's kept impulses; its
     /// rows only with `rows` (SoftLanes builds them as it packs).
     SoftManifold manifoldOf(std::size_t k, bool rows) const;
@@ -108,7 +105,7 @@ void SoftStep::run(Real dt)
     }
     saveKinetic();
     restituteSoft(m_buffers.manifolds, m_buffers.bodies, m_settings.restitutionThreshold,
-                  m_buffers.colours, m_context.threads,
+                  m_buffers.order.colours, m_context.threads,
                   m_buffers.inLanes ? &m_buffers.lanes : nullptr);
     addBodyWork();
     collectResults();
@@ -143,7 +140,14 @@ void SoftStep::prepare(Real dt)
     });
     // narrow phase once a step: every point the bodies can reach within it (12.1)
     findIslandContacts(m_island, m_slots, m_context, dt, true, m_buffers.contacts);
-    orderByColour();
+    // (12.5): last step's impulses, matched by the other side and the points' feature keys
+    m_buffers.kept.resize(m_buffers.contacts.size());
+    parallelFor(m_buffers.contacts.size(), m_context.threads, [&](std::size_t k) {
+        m_buffers.kept[k] = keptImpulsesOf(m_island, m_slots, m_buffers.contacts[k],
+                                           m_settings.contactTolerance);
+    });
+    orderSoftContacts(m_buffers.contacts, m_island.bodies.size(), m_context.threads,
+                      m_buffers.order);
     std::size_t points = 0;
     for (const IslandContact& contact : m_buffers.contacts) {
         points += static_cast<std::size_t>(contact.manifold.pointCount);
@@ -157,24 +161,23 @@ void SoftStep::prepare(Real dt)
     parallelFor(m_buffers.manifolds.size(), m_context.threads,
                 [&](std::size_t i) { m_buffers.manifolds[i] = manifoldOf(first + i, true); });
     if (m_buffers.inLanes) {
-        m_buffers.lanes.pack([&](std::size_t k) { return manifoldOf(k, false); }, m_buffers.colours,
-                             m_buffers.bodies, m_context.threads);
+        m_buffers.lanes.pack([&](std::size_t k) { return manifoldOf(k, false); },
+                             m_buffers.order.colours, m_buffers.bodies, m_context.threads);
     }
 }
 
 SoftManifold SoftStep::manifoldOf(std::size_t k, bool rows) const
 {
-    SoftManifold m = softManifoldOf(m_buffers.contacts[k], m_buffers.bodies, m_buffers.centres,
-                                    m_island.bodies.size(), rows);
-    // (12.5): last step's impulses, matched by the other side and the points' feature keys
-    warmStartFromCache(m_island, m_slots, m_buffers.contacts[k], m,
-                       m_settings.contactTolerance);
+    const std::uint32_t contact = m_buffers.order.colourOrder[k];
+    SoftManifold m = softManifoldOf(m_buffers.contacts[contact], m_buffers.bodies,
+                                    m_buffers.centres, m_island.bodies.size(), rows);
+    startFromKept(m_buffers.kept[contact], m);
     return m;
 }
 
 std::size_t SoftStep::firstUnpacked() const
 {
-    const std::vector<std::uint32_t>& offsets = m_buffers.colours.offsets;
+    const std::vector<std::uint32_t>& offsets = m_buffers.order.colours.offsets;
     return m_buffers.inLanes && offsets.size() >= 2 ? offsets[offsets.size() - 2] : 0;
 }
 
@@ -190,30 +193,6 @@ void SoftStep::collectResults()
     }
 }
 
-void SoftStep::orderByColour()
-{
-    // (10.5): the contacts colour by colour, whatever the threads, so every pass sweeps their
-    // manifolds in the same order and a large colour can be split over the threads (11.5c)
-    const std::size_t count = m_island.bodies.size();
-    const std::vector<IslandContact>& contacts = m_buffers.contacts;
-    m_buffers.ends.resize(contacts.size());
-    parallelFor(contacts.size(), m_context.threads, [&](std::size_t k) {
-        m_buffers.ends[k] = ProxyPair{contacts[k].solverA, contacts[k].solverB};
-    });
-    m_buffers.isStatic.assign(count + 1, 0);
-    m_buffers.isStatic[count] = 1;
-    const ConstraintColours colours =
-        colourConstraints(m_buffers.ends, m_buffers.isStatic, kMaxConstraintColours);
-    m_buffers.spareContacts.resize(contacts.size());
-    m_buffers.colourEnds.resize(contacts.size());
-    parallelFor(contacts.size(), m_context.threads, [&](std::size_t k) {
-        m_buffers.spareContacts[k] = contacts[colours.constraints[k]];
-        m_buffers.colourEnds[k] = m_buffers.ends[colours.constraints[k]];
-    });
-    std::swap(m_buffers.contacts, m_buffers.spareContacts);
-    m_buffers.colours.offsets = colours.offsets;
-}
-
 void SoftStep::substep(Real h, const SoftSolveSettings& solve)
 {
     const std::size_t count = m_island.bodies.size();
@@ -221,7 +200,7 @@ void SoftStep::substep(Real h, const SoftSolveSettings& solve)
     parallelFor(count, m_context.threads,
                 [&](std::size_t i) { bodies[i].linearVelocity += m_settings.gravity * h; });
     saveKinetic();
-    const SoftColours& colours = m_buffers.colours;
+    const SoftColours& colours = m_buffers.order.colours;
     const int threads = m_context.threads;
     SoftLanes* lanes = m_buffers.inLanes ? &m_buffers.lanes : nullptr;
     warmStartSoft(m_buffers.manifolds, bodies, colours, threads, lanes);
@@ -262,7 +241,7 @@ void SoftStep::finish()
     const std::size_t count = m_island.bodies.size();
     // (12.5): the last sub-step's impulses start the next step's sub-steps
     storeSoftWarmStart(m_island, m_slots, m_buffers.contacts, m_buffers.results,
-                       m_context.threads);
+                       m_buffers.order.colourPosition, m_context.threads);
     IslandWork total;
     for (const SoftContactResult& result : m_buffers.results) {
         for (int k = 0; k < result.pointCount; ++k) {
@@ -298,7 +277,7 @@ void SoftStep::finish()
         if (!pushed) {
             continue;
         }
-        for (const std::uint32_t side : {m_buffers.colourEnds[c].a, m_buffers.colourEnds[c].b}) {
+        for (const std::uint32_t side : {m_buffers.order.colourEnds[c].a, m_buffers.order.colourEnds[c].b}) {
             if (side < count) {
                 m_slots[m_island.bodies[side]].touchingGround = true;
             }

@@ -57,38 +57,54 @@ std::array<int, 4> matchPoints(const IslandContact& contact, const CachedSoftCon
 
 } // namespace
 
-void warmStartFromCache(const CoupledIsland& island, std::span<const BodySlot> slots,
-                        const IslandContact& contact, SoftManifold& m, Real tolerance)
+KeptImpulses keptImpulsesOf(const CoupledIsland& island, std::span<const BodySlot> slots,
+                            const IslandContact& contact, Real tolerance)
 {
+    KeptImpulses impulses;
     const std::vector<CachedSoftContact>& cache = slots[island.bodies[contact.owner]].softContacts;
     const auto kept = std::find_if(cache.begin(), cache.end(), [&](const CachedSoftContact& c) {
         return c.other == contact.ownerKey;
     });
     if (kept == cache.end()) {
-        return;
+        return impulses;
     }
     const Body& owner = slots[island.bodies[contact.owner]].body;
     const std::array<int, 4> match =
         matchPoints(contact, *kept, owner, kWarmStartReach * tolerance);
-    for (int k = 0; k < m.pointCount; ++k) {
+    impulses.found = true;
+    for (int k = 0; k < contact.manifold.pointCount; ++k) {
         if (match[k] >= 0) {
-            m.points[k].normalImpulse = kept->normalImpulses[match[k]];
+            impulses.normalImpulses[k] = kept->normalImpulses[match[k]];
         }
     }
-    m.frictionImpulse1 = glm::dot(m.tangent1, kept->frictionImpulse);
-    m.frictionImpulse2 = glm::dot(m.tangent2, kept->frictionImpulse);
-    m.twistImpulse = kept->twistImpulse;
+    impulses.frictionImpulse = kept->frictionImpulse;
+    impulses.twistImpulse = kept->twistImpulse;
+    return impulses;
+}
+
+void startFromKept(const KeptImpulses& kept, SoftManifold& m)
+{
+    if (!kept.found) {
+        return;
+    }
+    for (int k = 0; k < m.pointCount; ++k) {
+        m.points[k].normalImpulse = kept.normalImpulses[k];
+    }
+    m.frictionImpulse1 = glm::dot(m.tangent1, kept.frictionImpulse);
+    m.frictionImpulse2 = glm::dot(m.tangent2, kept.frictionImpulse);
+    m.twistImpulse = kept.twistImpulse;
 }
 
 void storeSoftWarmStart(const CoupledIsland& island, std::span<BodySlot> slots,
                         std::span<const IslandContact> contacts,
-                        std::span<const SoftContactResult> results, int threads)
+                        std::span<const SoftContactResult> results,
+                        std::span<const std::uint32_t> resultOf, int threads)
 {
     for (const std::uint32_t slot : island.bodies) {
         slots[slot].softContacts.clear();
     }
-    // each owner's cache is written by one share, from its contacts in their order; every share
-    // reads the contacts and their results in order, as they lie in memory
+    // each owner's cache is written by one share, from its contacts in the narrow phase's order
+    // (owner after owner, as the next step reads them)
     const auto shares = static_cast<std::size_t>(std::max(1, threads));
     parallelFor(shares, threads, [&](std::size_t share) {
         for (std::size_t index = 0; index < contacts.size(); ++index) {
@@ -96,7 +112,7 @@ void storeSoftWarmStart(const CoupledIsland& island, std::span<BodySlot> slots,
             if (contact.owner % shares != share) {
                 continue;
             }
-            const SoftContactResult& result = results[index];
+            const SoftContactResult& result = results[resultOf[index]];
             BodySlot& slot = slots[island.bodies[contact.owner]];
             CachedSoftContact kept;
             kept.other = contact.ownerKey;

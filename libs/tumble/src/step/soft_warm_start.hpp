@@ -7,21 +7,38 @@
 #include "step/coupled_step.hpp"
 #include "step/island_contacts.hpp"
 
+#include <array>
+#include <cstdint>
 #include <span>
 
 namespace tumble {
 
-/// Starts a contact's manifold from the impulses its owner kept for the same other side: each
-/// point's normal impulse where a point of the same feature key was kept (else one within ten
-/// contact tolerances of where it is), the friction impulse projected on the manifold's
-/// tangents, and the twist impulse. A contact new to its owner starts from none.
-void warmStartFromCache(const CoupledIsland& island, std::span<const BodySlot> slots,
-                        const IslandContact& contact, SoftManifold& manifold, Real tolerance);
+/// What a contact's owner kept of it last step, matched to the contact's points now.
+struct KeptImpulses {
+    /// Whether the owner kept the contact at all.
+    bool found = false;
+    std::array<Real, 4> normalImpulses{};
+    Vec3 frictionImpulse{0.0};
+    Real twistImpulse = 0.0;
+};
 
-/// Keeps the contacts' impulses in their owners' caches, replacing the island's old ones; each
+/// The impulses a contact's owner kept for the same other side: each point's normal impulse
+/// where a point of the same feature key was kept (else one within ten contact tolerances of
+/// where it is, else none), the friction impulse as a world vector, and the twist impulse.
+/// Read in the narrow phase's order, owner after owner, so each owner's cache is read at once.
+KeptImpulses keptImpulsesOf(const CoupledIsland& island, std::span<const BodySlot> slots,
+                            const IslandContact& contact, Real tolerance);
+
+/// Starts a manifold from its contact's kept impulses, the friction projected on its tangents.
+/// A contact new to its owner starts from none.
+void startFromKept(const KeptImpulses& kept, SoftManifold& manifold);
+
+/// Keeps the contacts' impulses in their owners' caches, replacing the island's old ones:
+/// `contacts` in the narrow phase's order, contact i's result at results[resultOf[i]]. Each
 /// owner's contacts go to one of `threads`.
 void storeSoftWarmStart(const CoupledIsland& island, std::span<BodySlot> slots,
                         std::span<const IslandContact> contacts,
-                        std::span<const SoftContactResult> results, int threads);
+                        std::span<const SoftContactResult> results,
+                        std::span<const std::uint32_t> resultOf, int threads);
 
 } // namespace tumble
