@@ -33,6 +33,8 @@ constexpr std::size_t kLargeWorldSlots = 1024;
 /// carried or searched costs many times one whose geometry is kept, and the bodies that moved
 /// lie together (the lower layers of a pile, what just landed).
 constexpr std::size_t kPairOwnersPerChunk = 16;
+/// How many pairs ahead a body's kept geometry is asked for (prefetch.hpp).
+constexpr std::size_t kPairsPrefetchedAhead = 4;
 
 /// A bound on the angular speed over a torque-free step: |w| <= |L| / I_min <= |w0| I_max / I_min
 /// (the swept box of (10.3) needs one for the whole step).
@@ -121,12 +123,24 @@ void World::findPairs(detail::StepScratch& scratch, Real dt)
         scratch.pairGroups.build(scratch.pairOwners, m_slots.size());
         const OwnerGroups& groups = scratch.pairGroups;
         parallelForBalanced(groups.count(), threads, kPairOwnersPerChunk, [&](std::size_t g) {
+            if (g + 1 < groups.count() && !groups.group(g + 1).empty()) {
+                m_slots[scratch.pairOwners[groups.group(g + 1).front()]].pairGeometry.prefetch();
+            }
             for (const std::uint32_t k : groups.group(g)) {
                 testPair(k);
             }
         });
     } else {
+        // the pairs come sorted by their lower slot: a body's kept geometry is asked for ahead
+        // of its first pair
+        const auto lowerOf = [&](std::size_t k) {
+            return std::min(scratch.proxies[pairs[k].a].body, scratch.proxies[pairs[k].b].body);
+        };
         for (std::size_t k = 0; k < pairs.size(); ++k) {
+            const std::size_t ahead = k + kPairsPrefetchedAhead;
+            if (ahead < pairs.size() && lowerOf(ahead) != lowerOf(ahead - 1)) {
+                m_slots[lowerOf(ahead)].pairGeometry.prefetch();
+            }
             testPair(k);
         }
     }

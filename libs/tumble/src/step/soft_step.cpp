@@ -13,6 +13,7 @@
 #include "step/soft_manifolds.hpp"
 #include "step/soft_warm_start.hpp"
 #include "parallel_for.hpp"
+#include "prefetch.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -53,6 +54,8 @@ SoftBuffers& threadBuffers()
 /// An island of fewer manifolds sweeps them one at a time: most lanes of its colours' blocks
 /// would be empty.
 constexpr std::size_t kLaneManifolds = 32;
+/// How many manifolds ahead of the one being built its contact is asked for (prefetch.hpp).
+constexpr std::size_t kLanesPrefetchedAhead = 8;
 
 class SoftStep {
 public:
@@ -143,6 +146,7 @@ void SoftStep::prepare(Real dt)
     // (12.5): last step's impulses, matched by the other side and the points' feature keys
     m_buffers.kept.resize(m_buffers.contacts.size());
     parallelFor(m_buffers.contacts.size(), m_context.threads, [&](std::size_t k) {
+        prefetchKeptImpulses(m_island, m_slots, m_buffers.contacts, k + kLanesPrefetchedAhead);
         m_buffers.kept[k] = keptImpulsesOf(m_island, m_slots, m_buffers.contacts[k],
                                            m_settings.contactTolerance);
     });
@@ -168,7 +172,14 @@ void SoftStep::prepare(Real dt)
 
 SoftManifold SoftStep::manifoldOf(std::size_t k, bool rows) const
 {
-    const std::uint32_t contact = m_buffers.order.colourOrder[k];
+    const std::vector<std::uint32_t>& order = m_buffers.order.colourOrder;
+    // the contacts are read in colour order, all over memory: the next block's asked for ahead
+    if (k + kLanesPrefetchedAhead < order.size()) {
+        const std::uint32_t next = order[k + kLanesPrefetchedAhead];
+        prefetchLines(&m_buffers.contacts[next], sizeof(IslandContact));
+        prefetchLines(&m_buffers.kept[next], sizeof(KeptImpulses));
+    }
+    const std::uint32_t contact = order[k];
     SoftManifold m = softManifoldOf(m_buffers.contacts[contact], m_buffers.bodies,
                                     m_buffers.centres, m_island.bodies.size(), rows);
     startFromKept(m_buffers.kept[contact], m);

@@ -2,6 +2,7 @@
 #include "step/soft_warm_start.hpp"
 
 #include "parallel_for.hpp"
+#include "prefetch.hpp"
 
 #include <algorithm>
 
@@ -12,6 +13,8 @@ namespace {
 /// (11.6): how far, in contact tolerances, a point may be from a kept point of its contact whose
 /// features had another name and still take its impulse.
 constexpr Real kWarmStartReach = 10.0;
+/// What of an owner's cache is asked for ahead: its first two contacts.
+constexpr std::size_t kPrefetchedCacheBytes = 2 * sizeof(CachedSoftContact);
 
 Vec3 inBodyFrame(const Body& owner, const Vec3& point)
 {
@@ -80,6 +83,18 @@ KeptImpulses keptImpulsesOf(const CoupledIsland& island, std::span<const BodySlo
     impulses.frictionImpulse = kept->frictionImpulse;
     impulses.twistImpulse = kept->twistImpulse;
     return impulses;
+}
+
+void prefetchKeptImpulses(const CoupledIsland& island, std::span<const BodySlot> slots,
+                          std::span<const IslandContact> contacts, std::size_t k)
+{
+    if (k >= contacts.size() || (k > 0 && contacts[k].owner == contacts[k - 1].owner)) {
+        return;
+    }
+    const std::vector<CachedSoftContact>& cache = slots[island.bodies[contacts[k].owner]].softContacts;
+    if (!cache.empty()) {
+        prefetchLines(cache.data(), kPrefetchedCacheBytes);
+    }
 }
 
 void startFromKept(const KeptImpulses& kept, SoftManifold& m)

@@ -29,6 +29,11 @@ struct KeptImpulses {
 KeptImpulses keptImpulsesOf(const CoupledIsland& island, std::span<const BodySlot> slots,
                             const IslandContact& contact, Real tolerance);
 
+/// Asks the memory for what contacts[k]'s owner kept, where k is the first contact of its
+/// owner (a later one finds the owner's cache read already); nothing past the contacts' end.
+void prefetchKeptImpulses(const CoupledIsland& island, std::span<const BodySlot> slots,
+                          std::span<const IslandContact> contacts, std::size_t k);
+
 /// Starts a manifold from its contact's kept impulses, the friction projected on its tangents.
 /// A contact new to its owner starts from none.
 void startFromKept(const KeptImpulses& kept, SoftManifold& manifold);
