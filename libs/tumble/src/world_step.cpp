@@ -175,6 +175,7 @@ void World::buildStepIslands(detail::StepScratch& scratch, Real dt)
         scratch.dynamic[index] = slot.alive && !slot.body.isStatic();
     }
     const Islands islands = buildIslands(m_slots.size(), scratch.dynamic, scratch.links);
+    scratch.islandIndex.resize(m_slots.size());
     const IslandLinks links = linksOf(islands, scratch.links);
     for (std::size_t k = 0; k < islands.count(); ++k) {
         const std::span<const std::uint32_t> bodies = islands.island(k);
@@ -210,9 +211,19 @@ void World::buildStepIslands(detail::StepScratch& scratch, Real dt)
         }
         CoupledIsland& island = scratch.islands.emplace_back();
         island.bodies.assign(bodies.begin(), bodies.end());
+        for (std::size_t i = 0; i < bodies.size(); ++i) {
+            scratch.islandIndex[bodies[i]] = static_cast<std::uint32_t>(i);
+        }
+        const auto solverOf = [&](std::uint32_t slot) {
+            return m_slots[slot].body.isStatic() ? static_cast<std::uint32_t>(bodies.size())
+                                                 : scratch.islandIndex[slot];
+        };
         for (const std::uint32_t link : islandLinks) {
             const ProxyPair& pair = scratch.links[link];
-            island.pairs.emplace_back(std::min(pair.a, pair.b), std::max(pair.a, pair.b));
+            const std::uint32_t lower = std::min(pair.a, pair.b);
+            const std::uint32_t upper = std::max(pair.a, pair.b);
+            island.pairs.emplace_back(lower, upper);
+            island.pairSolvers.emplace_back(solverOf(lower), solverOf(upper));
             if (!scratch.pairManifolds.empty()) {
                 island.pairManifolds.push_back(
                     &scratch.pairManifolds[scratch.linkPairs[link]]);

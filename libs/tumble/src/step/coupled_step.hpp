@@ -21,6 +21,9 @@ struct CoupledIsland {
     /// Pairs of slot indices (lower first) whose boxes swept over the step overlap: both in
     /// `bodies`, or one of them a static body.
     std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    /// Each pair's sides as the island's solver bodies: a body's index in `bodies`, and
+    /// bodies.size() for a static side.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairSolvers;
     /// Empty, or each pair's points within the narrow phase's margin over the whole step, found
     /// by the broad phase's test (mayTouch) while the pair's geometry was at hand; valid for
     /// the step (the soft step's narrow phase reads them instead of asking the pair again).

@@ -14,17 +14,6 @@ namespace tumble {
 
 namespace {
 
-/// Position in the island's solver bodies of a slot: its index among the island's bodies, or
-/// the static solver body after them.
-std::uint32_t solverIndexOf(const CoupledIsland& island, std::uint32_t slot)
-{
-    const auto found = std::lower_bound(island.bodies.begin(), island.bodies.end(), slot);
-    if (found != island.bodies.end() && *found == slot) {
-        return static_cast<std::uint32_t>(found - island.bodies.begin());
-    }
-    return static_cast<std::uint32_t>(island.bodies.size());
-}
-
 /// reachOver of each of the island's bodies, then 0 for the static side; one vector per thread,
 /// kept from step to step.
 std::span<const Real> islandReach(const CoupledIsland& island, std::span<const BodySlot> slots,
@@ -183,8 +172,7 @@ bool findPairContact(const CoupledIsland& island, std::span<BodySlot> slots, Rea
     const auto [slotA, slotB] = island.pairs[k];
     const Body& a = slots[slotA].body;
     const Body& b = slots[slotB].body;
-    const std::uint32_t solverA = solverIndexOf(island, slotA);
-    const std::uint32_t solverB = solverIndexOf(island, slotB);
+    const auto [solverA, solverB] = island.pairSolvers[k];
     if (readsFoundManifolds(island, carry)) {
         contact.manifold = *island.pairManifolds[k];
     } else {
@@ -243,7 +231,9 @@ void findPairContactsOverThreads(const CoupledIsland& island, std::span<BodySlot
         ownerOf.resize(pairs);
         parallelFor(pairs, threads, [&](std::size_t k) {
             const auto [slotA, slotB] = island.pairs[k];
-            ownerOf[k] = solverIndexOf(island, pairGeometryOwner(slots, slotA, slotB));
+            ownerOf[k] = pairGeometryOwner(slots, slotA, slotB) == slotA
+                             ? island.pairSolvers[k].first
+                             : island.pairSolvers[k].second;
         });
         groups.build(ownerOf, island.bodies.size());
         parallelFor(groups.count(), threads, [&](std::size_t g) {

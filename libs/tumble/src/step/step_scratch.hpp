@@ -32,6 +32,8 @@ struct StepScratch {
     /// 1 for a live dynamic body, awake or asleep: islands are built over all of them.
     std::vector<std::uint8_t> dynamic;
     std::vector<CoupledIsland> islands;
+    /// Each body's index in the island being built.
+    std::vector<std::uint32_t> islandIndex;
     std::vector<StepEvents> islandEvents;
     /// Indices of the islands small enough to share the threads between them (11.5c).
     std::vector<std::uint32_t> smallIslands;
