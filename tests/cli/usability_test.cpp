@@ -536,10 +536,11 @@ TEST(CliMessages, RunAndValidateDrawTheirProgressBarOnlyOnATerminal)
     // clean. On a terminal, `script -qc "tumble run ... --quiet" /dev/null` shows
     // "[####....] 291/600 steps  ... steps/s  ... s left".
     // a run of about a second, so the bar (redrawn every 0.2 s) has time to show: with sleep on,
-    // the settled pyramid costs so little that the whole run takes about 0.2 s
+    // the settled pyramid costs so little that the whole run takes about 0.2 s, and 30 s of it
+    // awake take about that too
     const std::string scene = (kScenarioDir / "pyramid_55.toml").string();
     const Result run = runTumble(
-        {"run", scene, "--quiet", "--duration", "30", "--set", "world.sleep=false"},
+        {"run", scene, "--quiet", "--duration", "150", "--set", "world.sleep=false"},
         Capture::StderrOnly);
     EXPECT_EQ(run.exitCode, 0);
     EXPECT_EQ(run.output.find("steps/s"), std::string::npos) << run.output;
@@ -547,7 +548,7 @@ TEST(CliMessages, RunAndValidateDrawTheirProgressBarOnlyOnATerminal)
     EXPECT_EQ(validate.output.find("runs/s"), std::string::npos) << validate.output;
     // on a terminal (script(1), from Debian's essential bsdutils, gives the run one)
     const std::string scripted = "script -qc \"" + std::string(TUMBLE_EXE) + " run " + scene +
-                                 " --quiet --duration 30 --set world.sleep=false\" /dev/null 2>&1";
+                                 " --quiet --duration 150 --set world.sleep=false\" /dev/null 2>&1";
     FILE* pipe = popen(scripted.c_str(), "r");
     ASSERT_NE(pipe, nullptr);
     std::string text;
