@@ -35,6 +35,10 @@ const CuboidPairGeometry& PairGeometryCache::geometry(std::uint32_t other, const
     }
     Entry& entry = m_entries[index];
     entry.asked = true;
+    // the body's pairs come in the same order each step: the next one's entry is asked for
+    if (index + 1 < m_entries.size()) {
+        prefetchLines(&m_entries[index + 1], sizeof(Entry));
+    }
     const bool sameSizes =
         known && entry.halfExtentsA == halfExtentsA && entry.halfExtentsB == halfExtentsB;
     if (sameSizes && withinPairCacheReach(poseA, entry.poseA) &&

@@ -71,6 +71,10 @@ KeptImpulses keptImpulsesOf(const CoupledIsland& island, std::span<const BodySlo
     if (kept == cache.end()) {
         return impulses;
     }
+    // the owner's contacts come in the order they were kept: the next one's is asked for
+    if (kept + 1 != cache.end()) {
+        prefetchLines(&*(kept + 1), sizeof(CachedSoftContact));
+    }
     const Body& owner = slots[island.bodies[contact.owner]].body;
     const std::array<int, 4> match =
         matchPoints(contact, *kept, owner, kWarmStartReach * tolerance);
