@@ -22,12 +22,15 @@ Softness makeSoftness(Real hertz, Real dampingRatio, Real h)
 
 void centreSoftManifold(SoftManifold& m)
 {
-    m.centreA = Vec3(0.0);
-    m.centreB = Vec3(0.0);
+    Vec3 sumA(0.0);
+    Vec3 sumB(0.0);
     for (int k = 0; k < m.pointCount; ++k) {
-        m.centreA += m.points[k].anchorA / static_cast<Real>(m.pointCount);
-        m.centreB += m.points[k].anchorB / static_cast<Real>(m.pointCount);
+        sumA += m.points[k].anchorA;
+        sumB += m.points[k].anchorB;
     }
+    const Real count = m.pointCount > 0 ? static_cast<Real>(m.pointCount) : 1.0;
+    m.centreA = sumA / count;
+    m.centreB = sumB / count;
 }
 
 void prepareSoftRows(SoftManifold& m, std::span<const SoftBody> bodies)
