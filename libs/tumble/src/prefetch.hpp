@@ -1,6 +1,6 @@
 // Asking the memory for data a loop reads a few iterations later, where the data lies in many
-// separate places that no hardware prefetcher can guess (docs/benchmark.md, "Reads asked for
-// ahead").
+// separate places that no hardware prefetcher can guess (docs/benchmark.md, "Rows from levers and
+// centres, look-ups in owner order, and reads asked for ahead").
 #pragma once
 
 #include <cstddef>
