@@ -43,22 +43,34 @@ struct SoftPair {
         wB += b.invInertia * glm::cross(m.centreB, impulse);
     }
 
+    /// The sum of a manifold's points' impulses, sum_k lambda_k, and of their levers on each
+    /// side, sum_k lambda_k r_k (12.4b).
+    struct Levers {
+        Real total = 0.0;
+        Vec3 a{0.0};
+        Vec3 b{0.0};
+    };
+
+    static Levers leversOf(const SoftManifold& m, const std::array<Real, 4>& impulse)
+    {
+        Levers sums;
+        for (int k = 0; k < m.pointCount; ++k) {
+            sums.total = sums.total + impulse[k];
+            sums.a = sums.a + impulse[k] * m.points[k].anchorA;
+            sums.b = sums.b + impulse[k] * m.points[k].anchorB;
+        }
+        return sums;
+    }
+
     /// The normal impulses of a manifold's points at once: their sum along n, and their moments
     /// sum_k lambda_k (r_k x n) = (sum_k lambda_k r_k) x n through each inverse inertia (12.4b).
     void applyNormals(const SoftManifold& m, const std::array<Real, 4>& impulse)
     {
-        Real total = 0.0;
-        Vec3 leverA(0.0);
-        Vec3 leverB(0.0);
-        for (int k = 0; k < m.pointCount; ++k) {
-            total = total + impulse[k];
-            leverA = leverA + impulse[k] * m.points[k].anchorA;
-            leverB = leverB + impulse[k] * m.points[k].anchorB;
-        }
-        vA -= (a.invMass * total) * m.normal;
-        wA -= a.invInertia * glm::cross(leverA, m.normal);
-        vB += (b.invMass * total) * m.normal;
-        wB += b.invInertia * glm::cross(leverB, m.normal);
+        const Levers sums = leversOf(m, impulse);
+        vA -= (a.invMass * sums.total) * m.normal;
+        wA -= a.invInertia * glm::cross(sums.a, m.normal);
+        vB += (b.invMass * sums.total) * m.normal;
+        wB += b.invInertia * glm::cross(sums.b, m.normal);
     }
 
     /// A manifold's accumulated impulses at once (the warm start, (12.5)): the normal ones, the
@@ -66,22 +78,15 @@ struct SoftPair {
     void applyAccumulated(const SoftManifold& m, const std::array<Real, 4>& impulse, Real twist,
                           Real f1, Real f2)
     {
-        Real total = 0.0;
-        Vec3 leverA(0.0);
-        Vec3 leverB(0.0);
-        for (int k = 0; k < m.pointCount; ++k) {
-            total = total + impulse[k];
-            leverA = leverA + impulse[k] * m.points[k].anchorA;
-            leverB = leverB + impulse[k] * m.points[k].anchorB;
-        }
+        const Levers sums = leversOf(m, impulse);
         const Vec3 friction = f1 * m.tangent1 + f2 * m.tangent2;
-        const Vec3 linear = total * m.normal + friction;
+        const Vec3 linear = sums.total * m.normal + friction;
         const Vec3 twistMoment = twist * m.normal;
         vA -= a.invMass * linear;
-        wA -= a.invInertia * (glm::cross(leverA, m.normal) + glm::cross(m.centreA, friction) +
+        wA -= a.invInertia * (glm::cross(sums.a, m.normal) + glm::cross(m.centreA, friction) +
                               twistMoment);
         vB += b.invMass * linear;
-        wB += b.invInertia * (glm::cross(leverB, m.normal) + glm::cross(m.centreB, friction) +
+        wB += b.invInertia * (glm::cross(sums.b, m.normal) + glm::cross(m.centreB, friction) +
                               twistMoment);
     }
 
