@@ -288,7 +288,8 @@ void SoftStep::finish()
         if (!pushed) {
             continue;
         }
-        for (const std::uint32_t side : {m_buffers.order.colourEnds[c].a, m_buffers.order.colourEnds[c].b}) {
+        const ProxyPair& ends = m_buffers.order.colourEnds[c];
+        for (const std::uint32_t side : {ends.a, ends.b}) {
             if (side < count) {
                 m_slots[m_island.bodies[side]].touchingGround = true;
             }

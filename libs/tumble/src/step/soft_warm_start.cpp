@@ -95,7 +95,8 @@ void prefetchKeptImpulses(const CoupledIsland& island, std::span<const BodySlot>
     if (k >= contacts.size() || (k > 0 && contacts[k].owner == contacts[k - 1].owner)) {
         return;
     }
-    const std::vector<CachedSoftContact>& cache = slots[island.bodies[contacts[k].owner]].softContacts;
+    const std::uint32_t owner = island.bodies[contacts[k].owner];
+    const std::vector<CachedSoftContact>& cache = slots[owner].softContacts;
     if (!cache.empty()) {
         prefetchLines(cache.data(), kPrefetchedCacheBytes);
     }
