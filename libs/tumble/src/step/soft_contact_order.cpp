@@ -12,10 +12,17 @@ void orderSoftContacts(std::span<const IslandContact> contacts, std::size_t body
 {
     // (10.5): the same colours whatever the threads, so every pass sweeps the manifolds in the
     // same order and a large colour can be split over the threads (11.5c)
-    order.ends.resize(contacts.size());
+    order.nextEnds.resize(contacts.size());
     parallelFor(contacts.size(), threads, [&](std::size_t k) {
-        order.ends[k] = ProxyPair{contacts[k].solverA, contacts[k].solverB};
+        order.nextEnds[k] = ProxyPair{contacts[k].solverA, contacts[k].solverB};
     });
+    // the colours depend on the ends and the body count alone: a settled island's are last
+    // step's
+    if (order.colouredBodies == bodyCount && order.nextEnds == order.ends) {
+        return;
+    }
+    std::swap(order.ends, order.nextEnds);
+    order.colouredBodies = bodyCount;
     order.isStatic.assign(bodyCount + 1, 0);
     order.isStatic[bodyCount] = 1;
     ConstraintColours colours =

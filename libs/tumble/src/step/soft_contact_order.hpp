@@ -23,6 +23,10 @@ struct SoftContactOrder {
     SoftColours colours;
     /// Scratch: which solver bodies are static.
     std::vector<std::uint8_t> isStatic;
+    /// The island size the tables were made for (none yet: the largest size), and the next
+    /// step's ends, compared with `ends` before the tables are made again.
+    std::size_t colouredBodies = static_cast<std::size_t>(-1);
+    std::vector<ProxyPair> nextEnds;
 };
 
 /// (10.5): colours the contacts of an island of `bodyCount` dynamic bodies (the static solver
