@@ -35,9 +35,9 @@ struct CachedSoftContact {
     std::uint32_t other = 0;
     int pointCount = 0;
     std::array<std::uint32_t, 4> ids{};
-    /// Where each point was in the owner's body frame, m: a point whose features changed name
-    /// without moving (a tie in the clipping) is found by it, as in (11.6).
-    std::array<Vec3, 4> localPositions{};
+    /// Where each point was in the world when kept, m: a point whose features changed name
+    /// without moving (a tie in the clipping) is found by it in the owner's frame, as in (11.6).
+    std::array<Vec3, 4> positions{};
     std::array<Real, 4> normalImpulses{};
     Vec3 frictionImpulse{0.0};
     Real twistImpulse = 0.0;
@@ -62,8 +62,10 @@ struct BodySlot {
     bool coupled = false;
     /// Last step's impulses of the contacts this body owns in the island solver.
     std::vector<CachedContactPoint> contactCache;
-    /// Last step's impulses of the soft step's contacts this body owns.
+    /// Last step's impulses of the soft step's contacts this body owns, and the body's pose when
+    /// they were kept (their points' frame).
     std::vector<CachedSoftContact> softContacts;
+    Transform softContactsPose{};
     /// The box-box geometry of the pairs this body owns: with another body of higher slot, or
     /// with a static body (9.11).
     PairGeometryCache pairGeometry;

@@ -16,15 +16,16 @@ constexpr Real kWarmStartReach = 10.0;
 /// What of an owner's cache is asked for ahead: its first two contacts.
 constexpr std::size_t kPrefetchedCacheBytes = 2 * sizeof(CachedSoftContact);
 
-Vec3 inBodyFrame(const Body& owner, const Vec3& point)
+Vec3 inBodyFrame(const Vec3& position, const Quat& orientation, const Vec3& point)
 {
-    return glm::conjugate(owner.orientation) * (point - owner.position);
+    return glm::conjugate(orientation) * (point - position);
 }
 
 /// The kept point each of the contact's points takes its normal impulse from, or -1: the same
-/// feature key first, then the nearest unclaimed kept point within `reach`.
+/// feature key first, then the nearest unclaimed kept point within `reach` in the owner's
+/// frame, now and (`keptPose`) when kept.
 std::array<int, 4> matchPoints(const IslandContact& contact, const CachedSoftContact& kept,
-                               const Body& owner, Real reach)
+                               const Body& owner, const Transform& keptPose, Real reach)
 {
     std::array<int, 4> match{-1, -1, -1, -1};
     std::array<bool, 4> taken{};
@@ -42,10 +43,13 @@ std::array<int, 4> matchPoints(const IslandContact& contact, const CachedSoftCon
         if (match[k] >= 0) {
             continue;
         }
-        const Vec3 local = inBodyFrame(owner, contact.manifold.points[k].position);
+        const Vec3 local =
+            inBodyFrame(owner.position, owner.orientation, contact.manifold.points[k].position);
         Real nearest = reach * reach;
         for (int j = 0; j < kept.pointCount; ++j) {
-            const Real distance = lengthSquared(local - kept.localPositions[j]);
+            const Vec3 keptLocal =
+                inBodyFrame(keptPose.position, keptPose.orientation, kept.positions[j]);
+            const Real distance = lengthSquared(local - keptLocal);
             if (!taken[j] && distance <= nearest) {
                 nearest = distance;
                 match[k] = j;
@@ -64,7 +68,8 @@ KeptImpulses keptImpulsesOf(const CoupledIsland& island, std::span<const BodySlo
                             const IslandContact& contact, Real tolerance)
 {
     KeptImpulses impulses;
-    const std::vector<CachedSoftContact>& cache = slots[island.bodies[contact.owner]].softContacts;
+    const BodySlot& slot = slots[island.bodies[contact.owner]];
+    const std::vector<CachedSoftContact>& cache = slot.softContacts;
     const auto kept = std::find_if(cache.begin(), cache.end(), [&](const CachedSoftContact& c) {
         return c.other == contact.ownerKey;
     });
@@ -75,9 +80,8 @@ KeptImpulses keptImpulsesOf(const CoupledIsland& island, std::span<const BodySlo
     if (kept + 1 != cache.end()) {
         prefetchLines(&*(kept + 1), sizeof(CachedSoftContact));
     }
-    const Body& owner = slots[island.bodies[contact.owner]].body;
-    const std::array<int, 4> match =
-        matchPoints(contact, *kept, owner, kWarmStartReach * tolerance);
+    const std::array<int, 4> match = matchPoints(contact, *kept, slot.body, slot.softContactsPose,
+                                                 kWarmStartReach * tolerance);
     impulses.found = true;
     for (int k = 0; k < contact.manifold.pointCount; ++k) {
         if (match[k] >= 0) {
@@ -134,12 +138,13 @@ void storeSoftWarmStart(const CoupledIsland& island, std::span<BodySlot> slots,
             }
             const SoftContactResult& result = results[resultOf[index]];
             BodySlot& slot = slots[island.bodies[contact.owner]];
+            slot.softContactsPose = Transform{slot.body.position, slot.body.orientation};
             CachedSoftContact kept;
             kept.other = contact.ownerKey;
             kept.pointCount = result.pointCount;
             for (int k = 0; k < result.pointCount; ++k) {
                 kept.ids[k] = contact.manifold.points[k].id;
-                kept.localPositions[k] = inBodyFrame(slot.body, contact.manifold.points[k].position);
+                kept.positions[k] = contact.manifold.points[k].position;
                 kept.normalImpulses[k] = result.normalImpulses[k];
             }
             kept.frictionImpulse = result.frictionImpulse;
