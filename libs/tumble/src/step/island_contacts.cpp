@@ -209,8 +209,28 @@ void findPairContactsOverThreads(const CoupledIsland& island, std::span<BodySlot
                                  Real tolerance, std::span<const Real> reach, bool carry,
                                  int threads, std::vector<IslandContact>& contacts)
 {
-    // kept from step to step by the calling thread; the lambda below names them through these
+    // kept from step to step by the calling thread; the lambdas below name them through these
     // references, since a thread_local named there would be each worker's own
+    thread_local std::vector<std::uint32_t> keptPlace;
+    std::vector<std::uint32_t>& place = keptPlace;
+    const std::size_t pairs = island.pairs.size();
+    place.resize(pairs);
+    if (readsFoundManifolds(island, carry)) {
+        // which pairs touch is known from their manifolds: each contact is written once, at
+        // its place (a megabyte on the pyramid, copied twice otherwise)
+        std::uint32_t count = 0;
+        for (std::size_t k = 0; k < pairs; ++k) {
+            place[k] = count;
+            count += island.pairManifolds[k]->pointCount > 0 ? 1 : 0;
+        }
+        contacts.resize(count);
+        parallelFor(pairs, threads, [&](std::size_t k) {
+            if (island.pairManifolds[k]->pointCount > 0) {
+                findPairContact(island, slots, tolerance, reach, carry, k, contacts[place[k]]);
+            }
+        });
+        return;
+    }
     thread_local std::vector<IslandContact> keptOfPair;
     thread_local std::vector<std::uint32_t> keptOwnerOf;
     thread_local OwnerGroups keptGroups;
@@ -219,33 +239,22 @@ void findPairContactsOverThreads(const CoupledIsland& island, std::span<BodySlot
     std::vector<std::uint8_t>& found = keptFound;
     std::vector<std::uint32_t>& ownerOf = keptOwnerOf;
     OwnerGroups& groups = keptGroups;
-    const std::size_t pairs = island.pairs.size();
     ofPair.resize(pairs);
     found.resize(pairs);
-    const auto findContact = [&](std::size_t k) {
-        found[k] = findPairContact(island, slots, tolerance, reach, carry, k, ofPair[k]) ? 1 : 0;
-    };
-    if (readsFoundManifolds(island, carry)) {
-        parallelFor(pairs, threads, findContact);
-    } else {
-        ownerOf.resize(pairs);
-        parallelFor(pairs, threads, [&](std::size_t k) {
-            const auto [slotA, slotB] = island.pairs[k];
-            ownerOf[k] = pairGeometryOwner(slots, slotA, slotB) == slotA
-                             ? island.pairSolvers[k].first
-                             : island.pairSolvers[k].second;
-        });
-        groups.build(ownerOf, island.bodies.size());
-        parallelFor(groups.count(), threads, [&](std::size_t g) {
-            for (const std::uint32_t k : groups.group(g)) {
-                findContact(k);
-            }
-        });
-    }
+    ownerOf.resize(pairs);
+    parallelFor(pairs, threads, [&](std::size_t k) {
+        const auto [slotA, slotB] = island.pairs[k];
+        ownerOf[k] = pairGeometryOwner(slots, slotA, slotB) == slotA ? island.pairSolvers[k].first
+                                                                      : island.pairSolvers[k].second;
+    });
+    groups.build(ownerOf, island.bodies.size());
+    parallelFor(groups.count(), threads, [&](std::size_t g) {
+        for (const std::uint32_t k : groups.group(g)) {
+            found[k] =
+                findPairContact(island, slots, tolerance, reach, carry, k, ofPair[k]) ? 1 : 0;
+        }
+    });
     // each found contact to its place in the order of the pairs
-    thread_local std::vector<std::uint32_t> keptPlace;
-    std::vector<std::uint32_t>& place = keptPlace;
-    place.resize(pairs);
     std::uint32_t count = 0;
     for (std::size_t k = 0; k < pairs; ++k) {
         place[k] = count;
