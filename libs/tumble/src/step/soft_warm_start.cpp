@@ -5,6 +5,7 @@
 #include "prefetch.hpp"
 
 #include <algorithm>
+#include <vector>
 
 namespace tumble {
 
@@ -128,14 +129,19 @@ void storeSoftWarmStart(const CoupledIsland& island, std::span<BodySlot> slots,
         slots[slot].softContacts.clear();
     }
     // each owner's cache is written by one share, from its contacts in the narrow phase's order
-    // (owner after owner, as the next step reads them)
+    // (owner after owner, as the next step reads them); each share reads the owners from a
+    // table of their own, not from every contact
+    thread_local std::vector<std::uint32_t> keptOwners;
+    std::vector<std::uint32_t>& owners = keptOwners;
+    owners.resize(contacts.size());
+    parallelFor(contacts.size(), threads, [&](std::size_t k) { owners[k] = contacts[k].owner; });
     const auto shares = static_cast<std::size_t>(std::max(1, threads));
     parallelFor(shares, threads, [&](std::size_t share) {
         for (std::size_t index = 0; index < contacts.size(); ++index) {
-            const IslandContact& contact = contacts[index];
-            if (contact.owner % shares != share) {
+            if (owners[index] % shares != share) {
                 continue;
             }
+            const IslandContact& contact = contacts[index];
             const SoftContactResult& result = results[resultOf[index]];
             BodySlot& slot = slots[island.bodies[contact.owner]];
             slot.softContactsPose = Transform{slot.body.position, slot.body.orientation};
