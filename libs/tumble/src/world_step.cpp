@@ -161,14 +161,16 @@ void World::findPairs(detail::StepScratch& scratch, Real dt)
 void World::buildStepIslands(detail::StepScratch& scratch, Real dt)
 {
     (void)dt;
-    scratch.islands.clear();
     // no pairs and no half-spaces: every body is alone with the ground (and nothing allocates)
     if (scratch.links.empty() && m_planes.empty()) {
+        scratch.islands.clear();
         for (BodySlot& slot : m_slots) {
             slot.coupled = false;
         }
         return;
     }
+    // last step's islands are filled again where they lie, so their vectors keep their memory
+    std::size_t built = 0;
     scratch.dynamic.assign(m_slots.size(), 0);
     for (std::size_t index = 0; index < m_slots.size(); ++index) {
         const BodySlot& slot = m_slots[index];
@@ -209,8 +211,14 @@ void World::buildStepIslands(detail::StepScratch& scratch, Real dt)
         if (!coupled) {
             continue;
         }
-        CoupledIsland& island = scratch.islands.emplace_back();
+        if (built == scratch.islands.size()) {
+            scratch.islands.emplace_back();
+        }
+        CoupledIsland& island = scratch.islands[built++];
         island.bodies.assign(bodies.begin(), bodies.end());
+        island.pairs.clear();
+        island.pairSolvers.clear();
+        island.pairManifolds.clear();
         for (std::size_t i = 0; i < bodies.size(); ++i) {
             scratch.islandIndex[bodies[i]] = static_cast<std::uint32_t>(i);
         }
@@ -230,6 +238,7 @@ void World::buildStepIslands(detail::StepScratch& scratch, Real dt)
             }
         }
     }
+    scratch.islands.resize(built);
 }
 
 void World::advanceCoupledIslands(detail::StepScratch& scratch, Real dt)
