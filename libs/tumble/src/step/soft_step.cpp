@@ -76,11 +76,15 @@ private:
     /// The first contact that is not packed in lanes: the overflow group's, or 0.
     std::size_t firstUnpacked() const;
     void collectResults();
-    void substep(Real h, const SoftSolveSettings& solve);
+    /// One sub-step; `bookLast` when a sub-step went before it (its work is booked here).
+    void substep(Real h, const SoftSolveSettings& solve, bool bookLast);
     void finish();
+    /// For each body, in one pass: with `bookWork`, adds to its work what its kinetic energy
+    /// gained since `m_buffers.kinetic` (the passes' work since the last call); then gravity
+    /// over h (none for h = 0); then keeps its kinetic energy in `m_buffers.kinetic`.
+    void bookWorkAndGravity(Real h, bool bookWork);
     /// Adds to each body's work what its kinetic energy gained since `m_buffers.kinetic`.
     void addBodyWork();
-    void saveKinetic();
     Body& body(std::size_t local) { return m_slots[m_island.bodies[local]].body; }
 
     const CoupledIsland& m_island;
@@ -104,9 +108,10 @@ void SoftStep::run(Real dt)
                                   makeSoftness(2.0 * hertz, 0.5 * damping, h),
                                   1.0 / h, m_settings.softPushSpeed};
     for (int s = 0; s < substeps; ++s) {
-        substep(h, solve);
+        substep(h, solve, s > 0);
     }
-    saveKinetic();
+    // the last sub-step's work, and the kinetic energies restitution starts from
+    bookWorkAndGravity(0.0, true);
     restituteSoft(m_buffers.manifolds, m_buffers.bodies, m_settings.restitutionThreshold,
                   m_buffers.order.colours, m_context.threads,
                   m_buffers.inLanes ? &m_buffers.lanes : nullptr);
@@ -204,13 +209,11 @@ void SoftStep::collectResults()
     }
 }
 
-void SoftStep::substep(Real h, const SoftSolveSettings& solve)
+void SoftStep::substep(Real h, const SoftSolveSettings& solve, bool bookLast)
 {
     const std::size_t count = m_island.bodies.size();
     std::vector<SoftBody>& bodies = m_buffers.bodies;
-    parallelFor(count, m_context.threads,
-                [&](std::size_t i) { bodies[i].linearVelocity += m_settings.gravity * h; });
-    saveKinetic();
+    bookWorkAndGravity(h, bookLast);
     const SoftColours& colours = m_buffers.order.colours;
     const int threads = m_context.threads;
     SoftLanes* lanes = m_buffers.inLanes ? &m_buffers.lanes : nullptr;
@@ -225,16 +228,24 @@ void SoftStep::substep(Real h, const SoftSolveSettings& solve)
         b.deltaRotation = glm::mat3_cast(b.orientation) * glm::transpose(body(i).rotation());
     });
     solveSoft(m_buffers.manifolds, bodies, solve, false, colours, threads, lanes);
-    addBodyWork();
 }
 
-void SoftStep::saveKinetic()
+void SoftStep::bookWorkAndGravity(Real h, bool bookWork)
 {
     const std::size_t count = m_island.bodies.size();
     m_buffers.kinetic.resize(count);
     parallelFor(count, m_context.threads, [&](std::size_t i) {
-        m_buffers.kinetic[i] = kineticEnergyWith(body(i), m_buffers.bodies[i].linearVelocity,
-                                                 m_buffers.bodies[i].angularVelocity);
+        SoftBody& soft = m_buffers.bodies[i];
+        if (bookWork) {
+            m_buffers.bodyWork[i] +=
+                kineticEnergyWith(body(i), soft.linearVelocity, soft.angularVelocity) -
+                m_buffers.kinetic[i];
+        }
+        if (h > 0.0) {
+            soft.linearVelocity += m_settings.gravity * h;
+        }
+        m_buffers.kinetic[i] =
+            kineticEnergyWith(body(i), soft.linearVelocity, soft.angularVelocity);
     });
 }
 
