@@ -24,7 +24,8 @@ struct RandomSoftIsland {
     std::vector<SoftManifold> manifolds;
     SoftColours colours;
 
-    RandomSoftIsland(std::uint32_t seed, std::uint32_t bodyCount, int count)
+    /// Manifolds of `fewestPoints` to four points.
+    RandomSoftIsland(std::uint32_t seed, std::uint32_t bodyCount, int count, int fewestPoints = 1)
     {
         std::mt19937_64 random(seed);
         const auto unit = [&] { return testing::randomUnit(random); };
@@ -52,7 +53,8 @@ struct RandomSoftIsland {
             m.normal = glm::normalize(vector() + Vec3(0.0, 0.1, 0.0));
             orthonormalBasis(m.normal, m.tangent1, m.tangent2);
             m.friction = random() % 4 == 0 ? 0.0 : 0.05 + 0.5 * (0.5 + 0.5 * unit());
-            m.pointCount = 1 + static_cast<int>(random() % 4);
+            m.pointCount =
+                fewestPoints + static_cast<int>(random() % static_cast<unsigned>(5 - fewestPoints));
             for (int k = 0; k < m.pointCount; ++k) {
                 SoftPoint& p = m.points[k];
                 p.anchorA = m.againstStatic ? Vec3(0.0) : vector();
@@ -189,6 +191,18 @@ TEST(SoftLanes, GiveTheBitsOfOneManifoldAtATime)
     }
     EXPECT_GT(released, 0);
     EXPECT_GT(bouncing, 0);
+}
+
+TEST(SoftLanes, BlocksOfFourPointManifoldsGiveTheSameBits)
+{
+    // every manifold of four points (faces on faces): every full block takes the pass without
+    // the points' masks (LaneBlock::everyPoint), each colour's last block the pass with them
+    RandomSoftIsland scalar(14, 60, 300, 4);
+    RandomSoftIsland wide = scalar;
+    const std::vector<SoftContactResult> one = runPasses(scalar, 1, nullptr);
+    SoftLanes lanes;
+    expectSameResults(one, runPasses(wide, 1, &lanes));
+    expectSameIslands(scalar, wide);
 }
 
 TEST(SoftLanes, LargeColoursOnTwoThreadsGiveTheSameBits)

@@ -57,7 +57,21 @@ struct LaneBlock {
     std::array<std::uint32_t, kLanes> bodyA{};
     std::array<std::uint32_t, kLanes> bodyB{};
     std::uint32_t lanes = 0;
+    /// Whether every lane holds a manifold of four points: then every point's mask is set.
+    bool everyPoint = false;
 };
+
+/// select(active, yes, no) for a point's mask, or `yes` where the block is known to have every
+/// point (LaneBlock::everyPoint): the same lanes, without the selection.
+template <bool EveryPoint>
+TUMBLE_WIDE_INLINE Wide whereActive(Mask active, Wide yes, Wide no)
+{
+    if constexpr (EveryPoint) {
+        return yes;
+    } else {
+        return select(active, yes, no);
+    }
+}
 
 /// The velocities of each lane's two bodies, held in registers through the block.
 struct LaneVelocities {
@@ -123,13 +137,14 @@ struct LaneLevers {
     Wide3 a, b;
 };
 
+template <bool EveryPoint>
 TUMBLE_WIDE_INLINE LaneLevers leversOf(const LaneBlock& block, const Wide (&impulse)[4])
 {
     LaneLevers sums{splat(0.0), {splat(0.0), splat(0.0), splat(0.0)},
                     {splat(0.0), splat(0.0), splat(0.0)}};
     for (int k = 0; k < 4; ++k) {
         const LanePoint& p = block.points[k];
-        const Wide share = select(p.active, impulse[k], splat(0.0));
+        const Wide share = whereActive<EveryPoint>(p.active, impulse[k], splat(0.0));
         sums.total = sums.total + share;
         sums.a = {sums.a.x + share * p.anchorA.x, sums.a.y + share * p.anchorA.y,
                   sums.a.z + share * p.anchorA.z};
@@ -146,10 +161,11 @@ TUMBLE_WIDE_INLINE Wide3 plus(const Wide3& a, const Wide3& b)
 
 /// The normal impulses of the four points at once: their sum along n, their moments
 /// (sum_k lambda_k r_k) x n through the inverse inertias (12.4b).
+template <bool EveryPoint>
 TUMBLE_WIDE_INLINE void applyNormals(const LaneBlock& block, const Wide (&impulse)[4],
                                      LaneVelocities& v)
 {
-    const LaneLevers sums = leversOf(block, impulse);
+    const LaneLevers sums = leversOf<EveryPoint>(block, impulse);
     addScaled(v.vA, block.invMassA * sums.total, block.normal, false);
     v.wA = minus(v.wA, times(block.inertiaA, cross(sums.a, block.normal)));
     addScaled(v.vB, block.invMassB * sums.total, block.normal, true);
@@ -184,11 +200,12 @@ TUMBLE_WIDE_INLINE void applyFriction(const LaneBlock& block, Wide d1, Wide d2,
 
 /// SoftPair::applyAccumulated: the warm start's impulses of each lane, one linear impulse and
 /// one moment a body.
+template <bool EveryPoint>
 TUMBLE_WIDE_INLINE void applyAccumulated(const LaneBlock& block, LaneVelocities& v)
 {
     const Wide impulses[4] = {block.points[0].normalImpulse, block.points[1].normalImpulse,
                               block.points[2].normalImpulse, block.points[3].normalImpulse};
-    const LaneLevers sums = leversOf(block, impulses);
+    const LaneLevers sums = leversOf<EveryPoint>(block, impulses);
     const Wide3 friction = frictionImpulse(block, block.frictionImpulse1, block.frictionImpulse2);
     const Wide3 linear{sums.total * block.normal.x + friction.x,
                        sums.total * block.normal.y + friction.y,

@@ -89,6 +89,7 @@ TUMBLE_WIDE_INLINE LaneTarget targetOf(const LanePoint& p, const LaneMotion& mot
 
 /// The rest of solveNormal for point k lane by lane, the same operations in the same order: a
 /// lane whose manifold has no point k changes nothing.
+template <bool EveryPoint>
 TUMBLE_WIDE_INLINE void solveNormal(LaneBlock& block, int k, const LaneTarget& t,
                                     LaneNormalVelocities& u)
 {
@@ -102,22 +103,25 @@ TUMBLE_WIDE_INLINE void solveNormal(LaneBlock& block, int k, const LaneTarget& t
 #pragma GCC unroll 4
     for (int i = 0; i < 4; ++i) {
         const Wide coupling = i == k ? p.normalK : block.normalCoupling[couplingIndex(i, k)];
-        u.at[i] = select(active, u.at[i] + coupling * applied, u.at[i]);
+        u.at[i] = whereActive<EveryPoint>(active, u.at[i] + coupling * applied, u.at[i]);
     }
     const Wide work = applied * (normalBefore + splat(0.5) * applied / p.normalMass);
-    p.normalImpulse = select(active, accumulated, p.normalImpulse);
-    p.maxNormalImpulse = select(active, maximum(p.maxNormalImpulse, applied), p.maxNormalImpulse);
-    p.normalWork = select(active, p.normalWork + work, p.normalWork);
+    p.normalImpulse = whereActive<EveryPoint>(active, accumulated, p.normalImpulse);
+    p.maxNormalImpulse = whereActive<EveryPoint>(active, maximum(p.maxNormalImpulse, applied),
+                                                 p.maxNormalImpulse);
+    p.normalWork = whereActive<EveryPoint>(active, p.normalWork + work, p.normalWork);
 }
 
 /// solveFriction (soft_contact_solver.cpp) lane by lane, the same operations in the same order.
+template <bool EveryPoint>
 TUMBLE_WIDE_INLINE void solveFriction(LaneBlock& block, LaneVelocities& v)
 {
     Wide load = splat(0.0);
     Wide twistLimit = splat(0.0);
     for (const LanePoint& p : block.points) {
-        load = select(p.active, load + p.normalImpulse, load);
-        twistLimit = select(p.active, twistLimit + p.leverArm * p.normalImpulse, twistLimit);
+        load = whereActive<EveryPoint>(p.active, load + p.normalImpulse, load);
+        twistLimit = whereActive<EveryPoint>(p.active, twistLimit + p.leverArm * p.normalImpulse,
+                                             twistLimit);
     }
     twistLimit = twistLimit * block.friction;
     const Wide spin = dot(block.normal, minus(v.wB, v.wA));

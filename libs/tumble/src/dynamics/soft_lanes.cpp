@@ -74,39 +74,51 @@ void emptyBlock(LaneBlock& block, std::uint32_t staticIndex)
     }
 }
 
+/// solveSoft on one block; EveryPoint where the block has every point (the same bits).
+template <bool EveryPoint>
+TUMBLE_WIDE_INLINE void solveBlock(LaneBlock& block, std::span<SoftBody> bodies,
+                                   const LaneSettings& s)
+{
+    LaneVelocities v = gather(block, bodies);
+    const LaneMotion motion = motionOf(block, bodies);
+    LaneNormalVelocities u = normalVelocities(block, v);
+    Wide before[4];
+    LaneTarget targets[4];
+    const LaneSoftness soft = softnessOf(block, s);
+    for (int k = 0; k < 4; ++k) {
+        before[k] = block.points[k].normalImpulse;
+        targets[k] = targetOf(block.points[k], motion, soft, s);
+    }
+    // (12.4): forth and back over the points, then the bodies take what they added; unrolled,
+    // so that the points' normal velocities stay in registers
+#pragma GCC unroll 4
+    for (int k = 0; k < 4; ++k) {
+        solveNormal<EveryPoint>(block, k, targets[k], u);
+    }
+#pragma GCC unroll 4
+    for (int k = 3; k >= 0; --k) {
+        solveNormal<EveryPoint>(block, k, targets[k], u);
+    }
+    Wide added[4];
+    for (int k = 0; k < 4; ++k) {
+        added[k] = block.points[k].normalImpulse - before[k];
+    }
+    applyNormals<EveryPoint>(block, added, v);
+    solveFriction<EveryPoint>(block, v);
+    scatter(block, v, bodies);
+}
+
 /// solveSoft over blocks, built for AVX-512, AVX2 and the baseline (TUMBLE_WIDE_CLONES); all
 /// give the same bits (no fused operations).
 TUMBLE_WIDE_CLONES
 void solveBlocks(std::span<LaneBlock> blocks, std::span<SoftBody> bodies, const LaneSettings& s)
 {
     for (LaneBlock& block : blocks) {
-        LaneVelocities v = gather(block, bodies);
-        const LaneMotion motion = motionOf(block, bodies);
-        LaneNormalVelocities u = normalVelocities(block, v);
-        Wide before[4];
-        LaneTarget targets[4];
-        const LaneSoftness soft = softnessOf(block, s);
-        for (int k = 0; k < 4; ++k) {
-            before[k] = block.points[k].normalImpulse;
-            targets[k] = targetOf(block.points[k], motion, soft, s);
+        if (block.everyPoint) {
+            solveBlock<true>(block, bodies, s);
+        } else {
+            solveBlock<false>(block, bodies, s);
         }
-        // (12.4): forth and back over the points, then the bodies take what they added; unrolled,
-        // so that the points' normal velocities stay in registers
-#pragma GCC unroll 4
-        for (int k = 0; k < 4; ++k) {
-            solveNormal(block, k, targets[k], u);
-        }
-#pragma GCC unroll 4
-        for (int k = 3; k >= 0; --k) {
-            solveNormal(block, k, targets[k], u);
-        }
-        Wide added[4];
-        for (int k = 0; k < 4; ++k) {
-            added[k] = block.points[k].normalImpulse - before[k];
-        }
-        applyNormals(block, added, v);
-        solveFriction(block, v);
-        scatter(block, v, bodies);
     }
 }
 
@@ -116,7 +128,11 @@ void warmStartBlocks(std::span<const LaneBlock> blocks, std::span<SoftBody> bodi
 {
     for (const LaneBlock& block : blocks) {
         LaneVelocities v = gather(block, bodies);
-        applyAccumulated(block, v);
+        if (block.everyPoint) {
+            applyAccumulated<true>(block, v);
+        } else {
+            applyAccumulated<false>(block, v);
+        }
         scatter(block, v, bodies);
     }
 }
@@ -170,12 +186,14 @@ void SoftLanes::pack(const ManifoldSource& source, const SoftColours& colours,
         LaneBlock& block = storage.blocks[b];
         emptyBlock(block, staticIndex);
         block.lanes = storage.laneCount[b];
+        block.everyPoint = block.lanes == kLanes;
         for (std::uint32_t lane = 0; lane < block.lanes; ++lane) {
             const std::uint32_t index = storage.firstManifold[b] + lane;
             const SoftManifold m = source(index);
             block.manifold[lane] = index;
             block.bodyA[lane] = m.bodyA;
             block.bodyB[lane] = m.bodyB;
+            block.everyPoint = block.everyPoint && m.pointCount == 4;
             packLane(block, static_cast<int>(lane), m, bodies);
         }
         prepareLaneRows(block, bodies);
