@@ -197,7 +197,7 @@ std::string document()
         << "- `tools/ci-determinism.sh`: builds `tumble` with -O0 (Debug) and -O2, both with "
            "-ffp-contract=off, and compares `tumble run --hash` on every scenario and on the "
            "first 0.4 s of Jolt's pyramid (`bench/scenes/pyramid_1240.toml`, the only island of "
-           "1024 points or more, which sweeps four manifolds at a time, 11.5d), each also on two "
+           "1024 points or more, which sweeps a block of manifolds at a time, 11.5d), each also on two "
            "threads; CI runs it.\n"
         << "- Threads: the world steps its bodies in fixed batches over OpenMP threads (`tumble run "
            "--threads K`, 0 = one per core, at most 256), so the results are bit-identical for any "

@@ -72,7 +72,7 @@ bool sameBits(Real a, Real b)
     return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
 }
 
-TEST(FourLaneSweep, GivesTheBitsOfTheOnePointStepRunAfterRun)
+TEST(LaneSweep, GivesTheBitsOfTheOnePointStepRunAfterRun)
 {
     for (const std::uint32_t seed : {1u, 2u, 3u}) {
         const RandomIsland island(seed, 300, 900);
@@ -87,7 +87,7 @@ TEST(FourLaneSweep, GivesTheBitsOfTheOnePointStepRunAfterRun)
         std::vector<ContactConstraint> reference = island.constraints;
         std::vector<SolverBody> fourByFour = island.bodies;
         std::vector<ContactConstraint> packed = island.constraints;
-        FourLaneSweeps lanes;
+        LaneSweeps lanes;
         lanes.pack(schedule, packed);
         std::size_t edgeSteps = 0;
         for (int sweep = 0; sweep < 3; ++sweep) {
@@ -131,7 +131,7 @@ TEST(FourLaneSweep, GivesTheBitsOfTheOnePointStepRunAfterRun)
     }
 }
 
-TEST(FourLaneSweep, ASolveOfALargeIslandEndsAsTheSweepsOneAtATimeWould)
+TEST(LaneSweep, ASolveOfALargeIslandEndsAsTheSweepsOneAtATimeWould)
 {
     // solveConstraints sweeps a coloured island four runs at a time from its second sweep: its
     // sweep count and maxima-driven stop are those of the same runs swept one point at a time

@@ -169,9 +169,9 @@ SweepMaxima colouredPass(const SweepSchedule& schedule, std::span<ContactConstra
 }
 
 /// One sweep colour by colour from the packed copy of the colours (11.5d): each colour's blocks
-/// of four runs, then the overflow group one point at a time. The same velocities and impulses
+/// of kLanes runs, then the overflow group one point at a time. The same velocities and impulses
 /// as colouredPass with solvePoint.
-SweepMaxima colouredSweep(const SweepSchedule& schedule, FourLaneSweeps& packed,
+SweepMaxima colouredSweep(const SweepSchedule& schedule, LaneSweeps& packed,
                           std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
                           int threads)
 {
@@ -223,8 +223,9 @@ int solveConstraints(std::span<ContactConstraint> constraints, std::span<SolverB
                      Real velocityTolerance, int threads)
 {
     // (11.5d): a coloured solve not done after its first sweep goes on from a packed copy of
-    // its colours, four runs side by side; a settled island's one sweep does not pay for the copy
-    thread_local FourLaneSweeps packed;
+    // its colours, a block of runs side by side; a settled island's one sweep does not pay for
+    // the copy
+    thread_local LaneSweeps packed;
     bool isPacked = false;
     int sweeps = iterations;
     bool activeSetHelps = true;

@@ -116,7 +116,7 @@ void centreSoftManifold(SoftManifold& manifold);
 
 /// Fills in a manifold's centre, its normal rows' angular parts, masses and couplings, and its
 /// tangential and twist masses from its points' anchors, normal, tangents and the bodies' inverse masses and
-/// inertias. (SoftLanes builds the same rows four manifolds at a time as it packs them.)
+/// inertias. (SoftLanes builds the same rows a block of manifolds at a time as it packs them.)
 void prepareSoftRows(SoftManifold& manifold, std::span<const SoftBody> bodies);
 
 /// What one solve pass reads besides the rows: the sub-step's softness for contacts between
@@ -151,7 +151,7 @@ void warmStartSoft(std::span<const SoftManifold> manifolds, std::span<SoftBody> 
 /// towards closing its gap when `useBias` (12.4), rigid and unbiased when not (the relax pass);
 /// in either pass then the manifold's twist row and its friction disc of radius mu sum lambda_n
 /// (12.5).
-/// `lanes` as for warmStartSoft: the same bits, four manifolds of a colour at a time.
+/// `lanes` as for warmStartSoft: the same bits, a block of a colour's manifolds at a time.
 void solveSoft(std::span<SoftManifold> manifolds, std::span<SoftBody> bodies,
                const SoftSolveSettings& settings, bool useBias, const SoftColours& colours,
                int threads, SoftLanes* lanes = nullptr);

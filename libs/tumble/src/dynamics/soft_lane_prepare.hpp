@@ -1,4 +1,4 @@
-// The soft step's rows built four manifolds at a time, in the lanes they are solved in
+// The soft step's rows built a block of manifolds at a time, in the lanes they are solved in
 // (docs/physics/12-soft-step.md, (12.3), (12.9)). For dynamics/soft_lanes.cpp only.
 #pragma once
 

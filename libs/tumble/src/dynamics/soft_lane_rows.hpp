@@ -1,10 +1,10 @@
-// The soft step's rows four manifolds at a time: a block's layout, lane by lane, and the
+// The soft step's rows a block of manifolds at a time: a block's layout, lane by lane, and the
 // lane-by-lane forms of the one-manifold pass's impulses, each in the same order so that a lane
 // rounds as soft_contact_solver.cpp does (docs/physics/12-soft-step.md, (12.9)); the passes
 // themselves are in soft_lane_solve.hpp. For dynamics/soft_lane*.cpp only.
 #pragma once
 
-#include "dynamics/four_lanes.hpp"
+#include "dynamics/vector_lanes.hpp"
 #include "dynamics/soft_contact_solver.hpp"
 
 #include <array>
@@ -38,8 +38,8 @@ TUMBLE_WIDE_INLINE Wide3 times(const WideMat3& m, const Wide3& v)
             m.column[0].z * v.x + m.column[1].z * v.y + m.column[2].z * v.z};
 }
 
-/// Four manifolds of one colour; a lane past `lanes` is empty: the static body on both sides,
-/// every row zero.
+/// kLanes manifolds of one colour (vector_lanes.hpp); a lane past `lanes` is empty: the static
+/// body on both sides, every row zero.
 struct LaneBlock {
     Wide3 normal, tangent1, tangent2;
     /// The points' centre as offsets from each centre of mass: where friction acts (12.5a).

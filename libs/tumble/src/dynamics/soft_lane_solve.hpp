@@ -1,4 +1,4 @@
-// The soft step's passes over a block four manifolds at a time: each point's normal row from the
+// The soft step's passes over a block of manifolds at a time: each point's normal row from the
 // points' normal velocities (12.4a), the twist and friction rows, lane by lane in the order of
 // soft_contact_solver.cpp (docs/physics/12-soft-step.md, (12.4), (12.5), (12.9)). For
 // dynamics/soft_lanes.cpp only.

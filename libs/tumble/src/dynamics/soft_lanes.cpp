@@ -1,4 +1,4 @@
-// Four soft manifolds of one colour solved side by side, one per vector lane
+// kLanes soft manifolds of one colour solved side by side, one per vector lane
 // (docs/physics/12-soft-step.md, (12.4), (12.5), (12.9)).
 #include "dynamics/soft_lanes.hpp"
 

@@ -1,6 +1,7 @@
-// The soft step's passes over four manifolds at once: the manifolds of one colour share no
-// dynamic body, so four of them are solved side by side in the lanes of one vector, each lane
-// doing exactly the arithmetic of the one-manifold pass (docs/physics/12-soft-step.md, (12.9)).
+// The soft step's passes over several manifolds at once: the manifolds of one colour share no
+// dynamic body, so kLanes of them (four, or eight with AVX-512) are solved side by side in the
+// lanes of one vector, each lane doing exactly the arithmetic of the one-manifold pass
+// (docs/physics/12-soft-step.md, (12.9)).
 #pragma once
 
 #include "dynamics/soft_contact_solver.hpp"
@@ -12,7 +13,7 @@
 
 namespace tumble {
 
-/// The colours of a soft island (not the overflow group) packed four manifolds to a block, each
+/// The colours of a soft island (not the overflow group) packed kLanes manifolds to a block, each
 /// block lane by lane in memory (structure of arrays).
 class SoftLanes {
 public:

@@ -1,8 +1,8 @@
-// Four manifolds of one colour solved side by side, one per vector lane
+// kLanes manifolds of one colour (vector_lanes.hpp) solved side by side, one per vector lane
 // (docs/physics/11-island-solver.md, (11.4), (11.5), (11.5d)).
 #include "dynamics/wide_sweep.hpp"
 
-#include "dynamics/four_lanes.hpp"
+#include "dynamics/vector_lanes.hpp"
 #include "parallel_for.hpp"
 
 #include <algorithm>
@@ -29,7 +29,7 @@ struct WidePoint {
     Mask active;
 };
 
-/// Four runs of one colour: their bodies, and where their points are, packed and unpacked.
+/// kLanes runs of one colour: their bodies, and where their points are, packed and unpacked.
 struct WideBlock {
     std::array<std::uint32_t, kLanes> bodyA{};
     std::array<std::uint32_t, kLanes> bodyB{};
@@ -163,7 +163,7 @@ Real largestLane(const Wide& w)
 
 } // namespace
 
-struct FourLaneSweeps::Storage {
+struct LaneSweeps::Storage {
     std::vector<WideBlock> blocks;
     /// Colour c's blocks are [colourBlocks[c], colourBlocks[c + 1]).
     std::vector<std::size_t> colourBlocks;
@@ -172,8 +172,8 @@ struct FourLaneSweeps::Storage {
 
 namespace {
 
-/// FourLaneSweeps::sweep. On x86-64 with GCC it is compiled for AVX-512 and AVX2 (a lane to
-/// each of the four doubles of a register) and for the baseline, and the loader picks the one
+/// LaneSweeps::sweep. On x86-64 with GCC it is compiled for AVX-512 and AVX2 (a lane to
+/// each of the doubles of a register) and for the baseline, and the loader picks the one
 /// the processor runs; all give the same bits, since none fuses a multiply and an add.
 TUMBLE_WIDE_CLONES
 void sweepBlocks(std::span<const WideBlock> blocks, std::span<WidePoint> points,
@@ -220,11 +220,11 @@ void sweepBlocks(std::span<const WideBlock> blocks, std::span<WidePoint> points,
 
 } // namespace
 
-FourLaneSweeps::FourLaneSweeps() : m_storage(std::make_unique<Storage>()) {}
+LaneSweeps::LaneSweeps() : m_storage(std::make_unique<Storage>()) {}
 
-FourLaneSweeps::~FourLaneSweeps() = default;
+LaneSweeps::~LaneSweeps() = default;
 
-void FourLaneSweeps::pack(const SweepSchedule& schedule,
+void LaneSweeps::pack(const SweepSchedule& schedule,
                           std::span<const ContactConstraint> constraints, int threads)
 {
     Storage& storage = *m_storage;
@@ -267,12 +267,12 @@ void FourLaneSweeps::pack(const SweepSchedule& schedule,
     });
 }
 
-std::pair<std::size_t, std::size_t> FourLaneSweeps::blocksOf(std::uint32_t colour) const
+std::pair<std::size_t, std::size_t> LaneSweeps::blocksOf(std::uint32_t colour) const
 {
     return {m_storage->colourBlocks[colour], m_storage->colourBlocks[colour + 1]};
 }
 
-void FourLaneSweeps::sweep(std::size_t first, std::size_t last, std::span<SolverBody> bodies,
+void LaneSweeps::sweep(std::size_t first, std::size_t last, std::span<SolverBody> bodies,
                            SweepMaxima& maxima)
 {
     WideMaxima wide;
@@ -283,7 +283,7 @@ void FourLaneSweeps::sweep(std::size_t first, std::size_t last, std::span<Solver
     maxima.correction = std::max(maxima.correction, largestLane(wide.correction));
 }
 
-void FourLaneSweeps::unpack(std::span<ContactConstraint> constraints, int threads) const
+void LaneSweeps::unpack(std::span<ContactConstraint> constraints, int threads) const
 {
     const Storage& storage = *m_storage;
     // each block's runs are its own constraints

@@ -1,6 +1,7 @@
-// A sweep's point steps over four manifolds at once: the runs of one colour share no dynamic
-// body, so four of them are solved side by side in the lanes of one vector, each lane doing
-// exactly the arithmetic of the one-point step (docs/physics/11-island-solver.md, (11.5d)).
+// A sweep's point steps over several manifolds at once: the runs of one colour share no dynamic
+// body, so kLanes of them (four, or eight with AVX-512) are solved side by side in the lanes of
+// one vector, each lane doing exactly the arithmetic of the one-point step
+// (docs/physics/11-island-solver.md, (11.5d)).
 #pragma once
 
 #include "dynamics/contact_constraint.hpp"
@@ -20,15 +21,15 @@ struct SweepMaxima {
     Real correction = 0.0;
 };
 
-/// The colours of a coloured schedule (11.5c) packed four runs to a block, each block's points
-/// lane by lane in memory (structure of arrays), for sweeps that solve the four runs of a block
+/// The colours of a coloured schedule (11.5c) packed kLanes runs to a block, each block's points
+/// lane by lane in memory (structure of arrays), for sweeps that solve the runs of a block
 /// side by side. The overflow group is not packed: it is swept one point at a time.
-class FourLaneSweeps {
+class LaneSweeps {
 public:
-    FourLaneSweeps();
-    ~FourLaneSweeps();
-    FourLaneSweeps(const FourLaneSweeps&) = delete;
-    FourLaneSweeps& operator=(const FourLaneSweeps&) = delete;
+    LaneSweeps();
+    ~LaneSweeps();
+    LaneSweeps(const LaneSweeps&) = delete;
+    LaneSweeps& operator=(const LaneSweeps&) = delete;
 
     /// Copies the constraints of the schedule's colours, impulses and work included, the blocks
     /// spread over `threads`.

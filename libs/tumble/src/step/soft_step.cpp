@@ -162,7 +162,7 @@ void SoftStep::prepare(Real dt)
         points += static_cast<std::size_t>(contact.manifold.pointCount);
     }
     m_events.statistics.contactPoints += points;
-    // (12.9): a large island's colours four manifolds at a time, the same bits, each manifold
+    // (12.9): a large island's colours a block of manifolds at a time, the same bits, each manifold
     // built where it is packed; the overflow group (or a small island) keeps its manifolds
     m_buffers.inLanes = m_buffers.contacts.size() >= kLaneManifolds;
     const std::size_t first = firstUnpacked();

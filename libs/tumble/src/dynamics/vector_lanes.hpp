@@ -1,7 +1,7 @@
-// Four doubles side by side, one per vector lane, and the lane-by-lane forms of the few
-// operations the contact step needs, each the IEEE operation of each lane, so that a lane rounds
-// exactly as the scalar code does (docs/physics/11-island-solver.md, (11.5d)). For
-// dynamics/wide_sweep.cpp only.
+// kLanes doubles side by side, one per vector lane, and the lane-by-lane forms of the few
+// operations the contact steps need, each the IEEE operation of each lane, so that a lane rounds
+// exactly as the scalar code does (docs/physics/11-island-solver.md, (11.5d);
+// docs/physics/12-soft-step.md, (12.9)). For dynamics/wide_sweep.cpp and dynamics/soft_lane*.
 #pragma once
 
 #include "tumble/math.hpp"
@@ -9,21 +9,27 @@
 #include <cmath>
 #include <cstdint>
 
-// The vectors below never cross wide_sweep.cpp's boundary, so how a target without 256-bit
-// registers passes them (the -Wpsabi note of GCC and Clang) does not matter.
+// The vectors below never cross the lane passes' files, so how a target without registers of
+// their width passes them (the -Wpsabi note of GCC and Clang) does not matter.
 #if defined(__GNUC__)
 #pragma GCC diagnostic ignored "-Wpsabi"
 #endif
 
 namespace tumble::lanes {
 
-constexpr int kLanes = 4;
+#ifndef TUMBLE_VECTOR_LANES
+#define TUMBLE_VECTOR_LANES 4
+#endif
+/// Manifolds a lane pass takes at once: eight where the build is for a machine with AVX-512, else
+/// four (libs/tumble/CMakeLists.txt). A colour's manifolds share no dynamic body, so the order in
+/// which its blocks take them changes no bit: the results are the same for either.
+constexpr int kLanes = TUMBLE_VECTOR_LANES;
+static_assert(kLanes == 4 || kLanes == 8);
 
-// Each lane function is built three times on x86-64 with GCC: for x86-64-v4 (AVX-512: the same
-// four-double vectors, with 32 registers instead of 16, so the lane passes keep their rows in
-// registers rather than on the stack), for AVX2, and for the baseline; the loader picks the one
-// the processor runs. No build fuses a multiply and an add (-ffp-contract=off), so all three
-// give the same bits.
+// Each lane function is built three times on x86-64 with GCC: for x86-64-v4 (AVX-512: 32
+// registers, of eight doubles, so the lane passes keep their rows in registers rather than on the
+// stack), for AVX2, and for the baseline; the loader picks the one the processor runs. No build
+// fuses a multiply and an add (-ffp-contract=off), so all three give the same bits.
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
 #define TUMBLE_WIDE_CLONES __attribute__((target_clones("arch=x86-64-v4", "avx2", "default")))
 #else
@@ -33,10 +39,10 @@ constexpr int kLanes = 4;
 /// instructions throughout.
 #define TUMBLE_WIDE_INLINE inline __attribute__((always_inline))
 
-/// Four doubles, one per lane (GCC and Clang vector extensions: each operation is the IEEE
+/// kLanes doubles, one per lane (GCC and Clang vector extensions: each operation is the IEEE
 /// operation of each lane, so a lane rounds exactly as the scalar step).
 /// Aligned to its size explicitly: without AVX, GCC gives a 32-byte vector only 16-byte
-/// alignment, which the AVX2 copy's aligned loads would not meet.
+/// alignment, which the wider copies' aligned loads would not meet.
 using Wide = double __attribute__((vector_size(kLanes * 8), aligned(kLanes * 8)));
 /// A lane mask: all bits set where true (the result of comparing two Wide).
 using Mask = std::int64_t __attribute__((vector_size(kLanes * 8), aligned(kLanes * 8)));
