@@ -205,6 +205,21 @@ TEST(SoftLanes, BlocksOfFourPointManifoldsGiveTheSameBits)
     expectSameIslands(scalar, wide);
 }
 
+TEST(SoftLanes, LanesPackedAgainOverAnotherIslandGiveTheSameBits)
+{
+    // the blocks are filled where the last island left them: an island of four-point manifolds
+    // first (every field of every lane written), then one of one to four points, whose lanes
+    // and points not present must read as empty, not as what the first island left
+    RandomSoftIsland first(15, 60, 300, 4);
+    RandomSoftIsland scalar(16, 60, 300);
+    RandomSoftIsland wide = scalar;
+    SoftLanes lanes;
+    runPasses(first, 1, &lanes);
+    const std::vector<SoftContactResult> one = runPasses(scalar, 1, nullptr);
+    expectSameResults(one, runPasses(wide, 1, &lanes));
+    expectSameIslands(scalar, wide);
+}
+
 TEST(SoftLanes, LargeColoursOnTwoThreadsGiveTheSameBits)
 {
     // 700 bodies and 1500 manifolds: the first colours hold 256 manifolds or more, so their

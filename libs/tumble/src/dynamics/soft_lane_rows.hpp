@@ -4,11 +4,14 @@
 // themselves are in soft_lane_solve.hpp. For dynamics/soft_lane*.cpp only.
 #pragma once
 
+#include "dynamics/lane_transpose.hpp"
 #include "dynamics/vector_lanes.hpp"
 #include "dynamics/soft_contact_solver.hpp"
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <span>
 
 namespace tumble::soft_rows {
@@ -78,6 +81,43 @@ struct LaneVelocities {
     Wide3 vA, wA, vB, wB;
 };
 
+/// A body's velocities and the first two doubles after them, the row lane_transpose.hpp turns.
+static_assert(offsetof(SoftBody, angularVelocity) == offsetof(SoftBody, linearVelocity) + 24 &&
+              sizeof(SoftBody) >= offsetof(SoftBody, linearVelocity) + 64);
+
+#if TUMBLE_TRANSPOSE_BY_SHUFFLES
+/// One side's velocities of the lanes: each body's row loaded whole and turned into the lanes'
+/// columns.
+TUMBLE_WIDE_INLINE void gatherSide(const std::array<std::uint32_t, kLanes>& index,
+                                   std::span<const SoftBody> bodies, Wide3& linear, Wide3& angular)
+{
+    Wide rows[8];
+    for (int lane = 0; lane < kLanes; ++lane) {
+        std::memcpy(&rows[lane], &bodies[index[lane]].linearVelocity, sizeof(Wide));
+    }
+    transposeEight(rows);
+    linear = {rows[0], rows[1], rows[2]};
+    angular = {rows[3], rows[4], rows[5]};
+}
+
+/// Each lane's six velocities turned into a row and written over its body's, where it moves.
+TUMBLE_WIDE_INLINE void scatterSide(const std::array<std::uint32_t, kLanes>& index,
+                                    const Mask& moves,
+                                    std::uint32_t lanes, const Wide3& linear,
+                                    const Wide3& angular, std::span<SoftBody> bodies)
+{
+    Wide rows[8] = {linear.x, linear.y, linear.z, angular.x, angular.y, angular.z, Wide{}, Wide{}};
+    transposeEight(rows);
+    for (std::uint32_t lane = 0; lane < lanes; ++lane) {
+        if (moves[lane] != 0) {
+            std::memcpy(&bodies[index[lane]].linearVelocity, &rows[lane], 6 * sizeof(Real));
+        }
+    }
+}
+#endif
+
+/// The velocities of each lane's bodies, lane by lane. (A pass keeps many rows in registers: the
+/// shuffles of gatherByRows would spill them, so the passes use this one.)
 TUMBLE_WIDE_INLINE LaneVelocities gather(const LaneBlock& block, std::span<const SoftBody> bodies)
 {
     LaneVelocities v;
@@ -107,6 +147,33 @@ TUMBLE_WIDE_INLINE void scatter(const LaneBlock& block, const LaneVelocities& v,
             bodies[block.bodyB[lane]].angularVelocity = laneOf(v.wB, l);
         }
     }
+}
+
+/// gather, with each body's row loaded whole and turned into the lanes' columns where shuffles
+/// can (the warm start, which holds little else, spends most of its time here).
+TUMBLE_WIDE_INLINE LaneVelocities gatherByRows(const LaneBlock& block,
+                                               std::span<const SoftBody> bodies)
+{
+#if TUMBLE_TRANSPOSE_BY_SHUFFLES
+    LaneVelocities v;
+    gatherSide(block.bodyA, bodies, v.vA, v.wA);
+    gatherSide(block.bodyB, bodies, v.vB, v.wB);
+    return v;
+#else
+    return gather(block, bodies);
+#endif
+}
+
+/// scatter, each lane's velocities turned into a row and written whole where shuffles can.
+TUMBLE_WIDE_INLINE void scatterByRows(const LaneBlock& block, const LaneVelocities& v,
+                                      std::span<SoftBody> bodies)
+{
+#if TUMBLE_TRANSPOSE_BY_SHUFFLES
+    scatterSide(block.bodyA, block.movesA, block.lanes, v.vA, v.wA, bodies);
+    scatterSide(block.bodyB, block.movesB, block.lanes, v.vB, v.wB, bodies);
+#else
+    scatter(block, v, bodies);
+#endif
 }
 
 TUMBLE_WIDE_INLINE Wide3 minus(const Wide3& a, const Wide3& b)

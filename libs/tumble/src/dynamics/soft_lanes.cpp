@@ -127,13 +127,13 @@ TUMBLE_WIDE_CLONES
 void warmStartBlocks(std::span<const LaneBlock> blocks, std::span<SoftBody> bodies)
 {
     for (const LaneBlock& block : blocks) {
-        LaneVelocities v = gather(block, bodies);
+        LaneVelocities v = gatherByRows(block, bodies);
         if (block.everyPoint) {
             applyAccumulated<true>(block, v);
         } else {
             applyAccumulated<false>(block, v);
         }
-        scatter(block, v, bodies);
+        scatterByRows(block, v, bodies);
     }
 }
 
