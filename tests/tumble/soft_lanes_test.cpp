@@ -166,6 +166,18 @@ void expectSameIslands(const RandomSoftIsland& one, const RandomSoftIsland& othe
     }
 }
 
+/// Runs the passes on a copy of `island` one manifold at a time and on another copy in `lanes`
+/// over `threads`, and expects the same bits of both.
+void expectLanesGiveTheBitsOfOneAtATime(const RandomSoftIsland& island, int threads,
+                                        SoftLanes& lanes)
+{
+    RandomSoftIsland scalar = island;
+    RandomSoftIsland wide = island;
+    const std::vector<SoftContactResult> one = runPasses(scalar, 1, nullptr);
+    expectSameResults(one, runPasses(wide, threads, &lanes));
+    expectSameIslands(scalar, wide);
+}
+
 TEST(SoftLanes, GiveTheBitsOfOneManifoldAtATime)
 {
     RandomSoftIsland scalar(11, 60, 300);
@@ -197,12 +209,8 @@ TEST(SoftLanes, BlocksOfFourPointManifoldsGiveTheSameBits)
 {
     // every manifold of four points (faces on faces): every full block takes the pass without
     // the points' masks (LaneBlock::everyPoint), each colour's last block the pass with them
-    RandomSoftIsland scalar(14, 60, 300, 4);
-    RandomSoftIsland wide = scalar;
-    const std::vector<SoftContactResult> one = runPasses(scalar, 1, nullptr);
     SoftLanes lanes;
-    expectSameResults(one, runPasses(wide, 1, &lanes));
-    expectSameIslands(scalar, wide);
+    expectLanesGiveTheBitsOfOneAtATime(RandomSoftIsland(14, 60, 300, 4), 1, lanes);
 }
 
 TEST(SoftLanes, LanesPackedAgainOverAnotherIslandGiveTheSameBits)
@@ -211,40 +219,30 @@ TEST(SoftLanes, LanesPackedAgainOverAnotherIslandGiveTheSameBits)
     // first (every field of every lane written), then one of one to four points, whose lanes
     // and points not present must read as empty, not as what the first island left
     RandomSoftIsland first(15, 60, 300, 4);
-    RandomSoftIsland scalar(16, 60, 300);
-    RandomSoftIsland wide = scalar;
     SoftLanes lanes;
     runPasses(first, 1, &lanes);
-    const std::vector<SoftContactResult> one = runPasses(scalar, 1, nullptr);
-    expectSameResults(one, runPasses(wide, 1, &lanes));
-    expectSameIslands(scalar, wide);
+    expectLanesGiveTheBitsOfOneAtATime(RandomSoftIsland(16, 60, 300), 1, lanes);
 }
 
 TEST(SoftLanes, LargeColoursOnTwoThreadsGiveTheSameBits)
 {
     // 700 bodies and 1500 manifolds: the first colours hold 256 manifolds or more, so their
     // blocks are shared out over the threads
-    RandomSoftIsland scalar(12, 700, 1500);
-    ASSERT_GE(scalar.colours.offsets[1] - scalar.colours.offsets[0], kThreadedColourManifolds);
-    RandomSoftIsland wide = scalar;
-    const std::vector<SoftContactResult> one = runPasses(scalar, 1, nullptr);
+    const RandomSoftIsland island(12, 700, 1500);
+    ASSERT_GE(island.colours.offsets[1] - island.colours.offsets[0], kThreadedColourManifolds);
     SoftLanes lanes;
-    expectSameResults(one, runPasses(wide, 2, &lanes));
-    expectSameIslands(scalar, wide);
+    expectLanesGiveTheBitsOfOneAtATime(island, 2, lanes);
 }
 
 TEST(SoftLanes, AnOverflowGroupAfterTheLanesGivesTheSameBits)
 {
     // 8 bodies and 500 manifolds need more colours than kMaxConstraintColours: the rest is the
     // overflow group, swept one manifold at a time after the lanes, from its own array
-    RandomSoftIsland scalar(13, 8, 500);
-    const std::vector<std::uint32_t>& offsets = scalar.colours.offsets;
+    const RandomSoftIsland island(13, 8, 500);
+    const std::vector<std::uint32_t>& offsets = island.colours.offsets;
     ASSERT_GT(offsets.back() - offsets[offsets.size() - 2], 10u);
-    RandomSoftIsland wide = scalar;
-    const std::vector<SoftContactResult> one = runPasses(scalar, 1, nullptr);
     SoftLanes lanes;
-    expectSameResults(one, runPasses(wide, 2, &lanes));
-    expectSameIslands(scalar, wide);
+    expectLanesGiveTheBitsOfOneAtATime(island, 2, lanes);
 }
 
 } // namespace
