@@ -1,4 +1,5 @@
-// The soft step's rows a block of manifolds at a time (docs/physics/12-soft-step.md, (12.3), (12.9)).
+// The soft step's rows a block of manifolds at a time (docs/physics/12-soft-step.md, (12.3),
+// (12.9)).
 #include "dynamics/soft_lane_prepare.hpp"
 
 namespace tumble::soft_rows {

@@ -244,8 +244,8 @@ void findPairContactsOverThreads(const CoupledIsland& island, std::span<BodySlot
     ownerOf.resize(pairs);
     parallelFor(pairs, threads, [&](std::size_t k) {
         const auto [slotA, slotB] = island.pairs[k];
-        ownerOf[k] = pairGeometryOwner(slots, slotA, slotB) == slotA ? island.pairSolvers[k].first
-                                                                      : island.pairSolvers[k].second;
+        const auto& [solverA, solverB] = island.pairSolvers[k];
+        ownerOf[k] = pairGeometryOwner(slots, slotA, slotB) == slotA ? solverA : solverB;
     });
     groups.build(ownerOf, island.bodies.size());
     parallelFor(groups.count(), threads, [&](std::size_t g) {

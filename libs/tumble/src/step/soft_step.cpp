@@ -83,8 +83,6 @@ private:
     /// gained since `m_buffers.kinetic` (the passes' work since the last call); then gravity
     /// over h (none for h = 0); then keeps its kinetic energy in `m_buffers.kinetic`.
     void bookWorkAndGravity(Real h, bool bookWork);
-    /// Adds to each body's work what its kinetic energy gained since `m_buffers.kinetic`.
-    void addBodyWork();
     Body& body(std::size_t local) { return m_slots[m_island.bodies[local]].body; }
 
     const CoupledIsland& m_island;
@@ -115,7 +113,8 @@ void SoftStep::run(Real dt)
     restituteSoft(m_buffers.manifolds, m_buffers.bodies, m_settings.restitutionThreshold,
                   m_buffers.order.colours, m_context.threads,
                   m_buffers.inLanes ? &m_buffers.lanes : nullptr);
-    addBodyWork();
+    // restitution's work
+    bookWorkAndGravity(0.0, true);
     collectResults();
     finish();
     ++m_events.statistics.islands;
@@ -246,15 +245,6 @@ void SoftStep::bookWorkAndGravity(Real h, bool bookWork)
         }
         m_buffers.kinetic[i] =
             kineticEnergyWith(body(i), soft.linearVelocity, soft.angularVelocity);
-    });
-}
-
-void SoftStep::addBodyWork()
-{
-    parallelFor(m_island.bodies.size(), m_context.threads, [&](std::size_t i) {
-        m_buffers.bodyWork[i] += kineticEnergyWith(body(i), m_buffers.bodies[i].linearVelocity,
-                                                   m_buffers.bodies[i].angularVelocity) -
-                                 m_buffers.kinetic[i];
     });
 }
 
