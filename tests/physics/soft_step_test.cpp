@@ -245,6 +245,27 @@ TEST(SoftStep, APileComesToRestTheSameForAnyThreadsAndItsLedgersBalance)
     }
 }
 
+TEST(SoftStep, AColumnWokenFromSleepStandsOnItsContactsFromItsFirstStep)
+{
+    // (10.4b): while the column sleeps its pairs keep their test's answer and find no points;
+    // the step that wakes it finds them, so no cube falls for a step on contacts not found
+    WorldSettings settings = softSettings();
+    settings.allowSleep = true;
+    World world = testing::worldWithGround(settings);
+    const std::vector<BodyId> column = addColumn(world, 3);
+    testing::simulate(world, 2.0, 1.0 / 60.0);
+    for (const BodyId cube : column) {
+        ASSERT_TRUE(world.body(cube).asleep);
+    }
+    world.applyImpulse(column.back(), Vec3(0.05, 0.0, 0.0), world.body(column.back()).position);
+    world.step(1.0 / 60.0);
+    for (const BodyId cube : column) {
+        EXPECT_FALSE(world.body(cube).asleep);
+        // a cube on no contact would fall at g dt = 0.16 m/s after the step
+        EXPECT_LT(std::abs(world.body(cube).linearVelocity.y), 1e-2 * kGravity / 60.0);
+    }
+}
+
 /// Three layers of 10 x 10 cubes, each layer dropped 0.2 m onto the one below, with a twist:
 /// one island of some 2 000 pairs, which takes all the threads inside its step (11.5c).
 World dropLayers(int threads)

@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
+#include <vector>
 
 namespace tumble {
 namespace {
@@ -115,6 +117,44 @@ TEST(PairGeometryCache, PairsNotAskedForAreForgotten)
     cache.geometry(7, kBelow, kUnit, kAbove, kUnit, kMargin);
     cache.forgetUnasked();
     EXPECT_EQ(cache.size(), 1u);
+}
+
+TEST(PairGeometryCache, ARestingPairsAnswerHoldsOnlyAtItsPosesAndMarginUntilAskedAgain)
+{
+    // (10.4b)
+    PairGeometryCache cache;
+    EXPECT_FALSE(cache.restingTouch(7, kBelow, kAbove, kMargin)) << "no entry yet";
+    cache.geometry(7, kBelow, kUnit, kAbove, kUnit, kMargin);
+    EXPECT_FALSE(cache.restingTouch(7, kBelow, kAbove, kMargin)) << "nothing remembered";
+    cache.rememberRestingTouch(7, kBelow, kAbove, kMargin, true);
+    EXPECT_EQ(cache.restingTouch(7, kBelow, kAbove, kMargin), std::optional<bool>(true));
+    cache.rememberRestingTouch(7, kBelow, kAbove, kMargin, false);
+    EXPECT_EQ(cache.restingTouch(7, kBelow, kAbove, kMargin), std::optional<bool>(false));
+    // any other pose, even within (9.11)'s reach, or another margin: not known
+    EXPECT_FALSE(cache.restingTouch(7, moved(kBelow, 1e-12, 0.0), kAbove, kMargin));
+    EXPECT_FALSE(cache.restingTouch(7, kBelow, moved(kAbove, 0.0, 1e-12), kMargin));
+    EXPECT_FALSE(cache.restingTouch(7, kBelow, kAbove, 2.0 * kMargin));
+    // asking only for the answer keeps the pair; asking for the geometry forgets the answer
+    cache.forgetUnasked();
+    EXPECT_EQ(cache.restingTouch(7, kBelow, kAbove, kMargin), std::optional<bool>(false));
+    cache.forgetUnasked();
+    EXPECT_EQ(cache.size(), 1u);
+    cache.geometry(7, kBelow, kUnit, kAbove, kUnit, kMargin);
+    EXPECT_FALSE(cache.restingTouch(7, kBelow, kAbove, kMargin));
+}
+
+TEST(PairGeometryCache, ARestingPairTestedAgainGivesTheAnswerMayTouchGives)
+{
+    // slot 0 a static box, slot 1 a box of the same size resting on it; then lifted 0.5 m
+    std::vector<BodySlot> slots(2);
+    slots[0].body.motion = BodyMotion::Static;
+    slots[1].body.position = Vec3(0.0, 2.0 - 1e-5, 0.0);
+    EXPECT_TRUE(restingMayTouch(slots, 0, 1, kMargin, 0.0, 0.0, false));
+    EXPECT_TRUE(restingMayTouch(slots, 0, 1, kMargin, 0.0, 0.0, false));
+    slots[1].body.position.y += 0.5;
+    EXPECT_FALSE(restingMayTouch(slots, 0, 1, kMargin, 0.0, 0.0, false));
+    EXPECT_FALSE(mayTouch(slots, 0, 1, kMargin, 0.0, 0.0, false));
+    EXPECT_TRUE(restingMayTouch(slots, 0, 1, kMargin, 0.5, 0.0, false)) << "a larger reach";
 }
 
 TEST(PairGeometryCache, ABodyOnTwoStaticBoxesKeepsBothPairs)

@@ -57,6 +57,12 @@ bool mayReach(const Aabb& box, const StaticPlane& plane, Real tolerance)
     return lowest <= tolerance;
 }
 
+/// Whether the body keeps its pose over the step unless an island wakes it: static or asleep.
+bool restsThisStep(const Body& body)
+{
+    return body.isStatic() || body.asleep;
+}
+
 } // namespace
 
 void World::findPairs(detail::StepScratch& scratch, Real dt)
@@ -75,7 +81,7 @@ void World::findPairs(detail::StepScratch& scratch, Real dt)
         const Transform pose{body.position, body.orientation};
         // a sleeping body does not move, but pairs like any dynamic body: its island wakes
         // with it (7.4)
-        const bool moving = !body.isStatic() && !body.asleep;
+        const bool moving = !restsThisStep(body);
         scratch.sweptBoxes[index] =
             moving ? sweptCuboidAabb(pose, body.shape.halfExtents(), body.linearVelocity,
                                      m_settings.gravity, angularSpeedBound(body), dt, margin)
@@ -92,24 +98,10 @@ void World::findPairs(detail::StepScratch& scratch, Real dt)
     // body near another but apart keeps the exact path (10.4)
     const std::span<const ProxyPair> pairs = scratch.broadPhase.pairs();
     scratch.pairTouches.assign(pairs.size(), 0);
-    // the soft step carries a pair's geometry with its bodies (9.12), and its narrow phase
-    // over the same step reads the points found here
     const bool carry = m_settings.solver == ContactSolver::Soft;
     scratch.pairManifolds.resize(carry ? pairs.size() : 0);
-    const auto testPair = [&](std::size_t k) {
-        const std::uint32_t a = scratch.proxies[pairs[k].a].body;
-        const std::uint32_t b = scratch.proxies[pairs[k].b].body;
-        PairManifold* manifold = carry ? &scratch.pairManifolds[k] : nullptr;
-        const std::uint32_t lower = std::min(a, b);
-        const std::uint32_t upper = std::max(a, b);
-        // each side's reach found here, not for every body: most bodies of a scene of bodies
-        // alone pair with none
-        const Real reachLower = reachOver(m_slots[lower].body, m_settings.gravity, dt);
-        const Real reachUpper = reachOver(m_slots[upper].body, m_settings.gravity, dt);
-        scratch.pairTouches[k] =
-            mayTouch(m_slots, lower, upper, margin, reachLower, reachUpper, carry, manifold) ? 1
-                                                                                            : 0;
-    };
+    scratch.pairAtRest.assign(pairs.size(), 0);
+    const auto testPair = [&](std::size_t k) { testBroadPair(scratch, k, dt); };
     const int threads = pairs.size() >= kLargeIslandPairs ? threadCount() : 1;
     if (threads > 1) {
         // a pair writes the geometry its dynamic body keeps (9.11): each body's pairs go to
@@ -158,9 +150,39 @@ void World::findPairs(detail::StepScratch& scratch, Real dt)
                 [&](std::size_t index) { m_slots[index].pairGeometry.forgetUnasked(); });
 }
 
+void World::testBroadPair(detail::StepScratch& scratch, std::size_t k, Real dt)
+{
+    const ProxyPair& pair = scratch.broadPhase.pairs()[k];
+    const std::uint32_t a = scratch.proxies[pair.a].body;
+    const std::uint32_t b = scratch.proxies[pair.b].body;
+    const std::uint32_t lower = std::min(a, b);
+    const std::uint32_t upper = std::max(a, b);
+    // each side's reach found here, not for every body: most bodies of a scene of bodies alone
+    // pair with none
+    const Real reachLower = reachOver(m_slots[lower].body, m_settings.gravity, dt);
+    const Real reachUpper = reachOver(m_slots[upper].body, m_settings.gravity, dt);
+    const Real tolerance = m_settings.contactTolerance;
+    // the soft step carries a pair's geometry with its bodies (9.12), and its narrow phase over
+    // the same step reads the points found here
+    const bool carry = m_settings.solver == ContactSolver::Soft;
+    PairManifold* manifold = carry ? &scratch.pairManifolds[k] : nullptr;
+    // (10.4b): a pair neither of whose bodies moves keeps its answer while it rests, and finds
+    // its points only if its island wakes (addIslandPairs)
+    const bool atRest =
+        restsThisStep(m_slots[lower].body) && restsThisStep(m_slots[upper].body);
+    scratch.pairAtRest[k] = atRest ? 1 : 0;
+    if (atRest && manifold != nullptr) {
+        manifold->pointCount = 0;
+    }
+    const bool touches =
+        atRest ? restingMayTouch(m_slots, lower, upper, tolerance, reachLower, reachUpper, carry)
+               : mayTouch(m_slots, lower, upper, tolerance, reachLower, reachUpper, carry,
+                          manifold);
+    scratch.pairTouches[k] = touches ? 1 : 0;
+}
+
 void World::buildStepIslands(detail::StepScratch& scratch, Real dt)
 {
-    (void)dt;
     // no pairs and no half-spaces: every body is alone with the ground (and nothing allocates)
     if (scratch.links.empty() && m_planes.empty()) {
         scratch.islands.clear();
@@ -216,29 +238,45 @@ void World::buildStepIslands(detail::StepScratch& scratch, Real dt)
         }
         CoupledIsland& island = scratch.islands[built++];
         island.bodies.assign(bodies.begin(), bodies.end());
-        island.pairs.clear();
-        island.pairSolvers.clear();
-        island.pairManifolds.clear();
-        for (std::size_t i = 0; i < bodies.size(); ++i) {
-            scratch.islandIndex[bodies[i]] = static_cast<std::uint32_t>(i);
-        }
-        const auto solverOf = [&](std::uint32_t slot) {
-            return m_slots[slot].body.isStatic() ? static_cast<std::uint32_t>(bodies.size())
-                                                 : scratch.islandIndex[slot];
-        };
-        for (const std::uint32_t link : islandLinks) {
-            const ProxyPair& pair = scratch.links[link];
-            const std::uint32_t lower = std::min(pair.a, pair.b);
-            const std::uint32_t upper = std::max(pair.a, pair.b);
-            island.pairs.emplace_back(lower, upper);
-            island.pairSolvers.emplace_back(solverOf(lower), solverOf(upper));
-            if (!scratch.pairManifolds.empty()) {
-                island.pairManifolds.push_back(
-                    &scratch.pairManifolds[scratch.linkPairs[link]]);
-            }
-        }
+        addIslandPairs(scratch, islandLinks, island, dt);
     }
     scratch.islands.resize(built);
+}
+
+void World::addIslandPairs(detail::StepScratch& scratch, std::span<const std::uint32_t> links,
+                           CoupledIsland& island, Real dt)
+{
+    island.pairs.clear();
+    island.pairSolvers.clear();
+    island.pairManifolds.clear();
+    const std::span<const std::uint32_t> bodies = island.bodies;
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        scratch.islandIndex[bodies[i]] = static_cast<std::uint32_t>(i);
+    }
+    const auto solverOf = [&](std::uint32_t slot) {
+        return m_slots[slot].body.isStatic() ? static_cast<std::uint32_t>(bodies.size())
+                                             : scratch.islandIndex[slot];
+    };
+    for (const std::uint32_t link : links) {
+        const ProxyPair& pair = scratch.links[link];
+        const std::uint32_t lower = std::min(pair.a, pair.b);
+        const std::uint32_t upper = std::max(pair.a, pair.b);
+        island.pairs.emplace_back(lower, upper);
+        island.pairSolvers.emplace_back(solverOf(lower), solverOf(upper));
+        if (scratch.pairManifolds.empty()) {
+            continue;
+        }
+        const std::uint32_t broadPair = scratch.linkPairs[link];
+        if (scratch.pairAtRest[broadPair] != 0) {
+            // (10.4b): the island woke in this step; its resting pair's points are those of
+            // the test over the same horizon
+            mayTouch(m_slots, lower, upper, m_settings.contactTolerance,
+                     reachOver(m_slots[lower].body, m_settings.gravity, dt),
+                     reachOver(m_slots[upper].body, m_settings.gravity, dt), true,
+                     &scratch.pairManifolds[broadPair]);
+        }
+        island.pairManifolds.push_back(&scratch.pairManifolds[broadPair]);
+    }
 }
 
 void World::advanceCoupledIslands(detail::StepScratch& scratch, Real dt)

@@ -18,6 +18,7 @@
 namespace tumble {
 
 struct BodySlot;
+struct CoupledIsland;
 struct StepContext;
 struct StepEvents;
 
@@ -124,7 +125,12 @@ private:
     void editBody(BodyId id, Change change);
     [[nodiscard]] StepContext stepContext() const;
     void findPairs(detail::StepScratch& scratch, Real dt);
+    /// The touch test (10.4) of the broad phase's pair k, answered for a resting pair (10.4b).
+    void testBroadPair(detail::StepScratch& scratch, std::size_t k, Real dt);
     void buildStepIslands(detail::StepScratch& scratch, Real dt);
+    /// The island's pairs from its links, and in a soft world their points.
+    void addIslandPairs(detail::StepScratch& scratch, std::span<const std::uint32_t> links,
+                        CoupledIsland& island, Real dt);
     void advanceSolitaryBodies(Real dt);
     void advanceBatch(std::size_t batch, Real dt);
     void advanceCoupledIslands(detail::StepScratch& scratch, Real dt);

@@ -25,9 +25,7 @@ const CuboidPairGeometry& PairGeometryCache::geometry(std::uint32_t other, const
                                                       const Vec3& halfExtentsB, Real margin,
                                                       CuboidPairGeometry* carryInto)
 {
-    const auto index =
-        static_cast<std::size_t>(std::find(m_others.begin(), m_others.end(), other) -
-                                 m_others.begin());
+    const std::size_t index = indexOf(other);
     const bool known = index < m_others.size();
     if (!known) {
         m_others.push_back(other);
@@ -35,6 +33,7 @@ const CuboidPairGeometry& PairGeometryCache::geometry(std::uint32_t other, const
     }
     Entry& entry = m_entries[index];
     entry.asked = true;
+    entry.restingKnown = false;
     // the body's pairs come in the same order each step: the next one's entry is asked for
     if (index + 1 < m_entries.size()) {
         prefetchLines(&m_entries[index + 1], sizeof(Entry));
@@ -62,6 +61,54 @@ const CuboidPairGeometry& PairGeometryCache::geometry(std::uint32_t other, const
     entry.geometry = findCuboidPairGeometry(cuboidFrame(poseA, halfExtentsA),
                                              cuboidFrame(poseB, halfExtentsB), margin);
     return entry.geometry;
+}
+
+std::size_t PairGeometryCache::indexOf(std::uint32_t other) const
+{
+    return static_cast<std::size_t>(std::find(m_others.begin(), m_others.end(), other) -
+                                    m_others.begin());
+}
+
+namespace {
+
+bool samePose(const Transform& pose, const Transform& kept)
+{
+    return pose.position == kept.position && pose.orientation == kept.orientation;
+}
+
+} // namespace
+
+std::optional<bool> PairGeometryCache::restingTouch(std::uint32_t other, const Transform& poseA,
+                                                    const Transform& poseB, Real margin)
+{
+    const std::size_t index = indexOf(other);
+    if (index == m_entries.size()) {
+        return std::nullopt;
+    }
+    Entry& entry = m_entries[index];
+    entry.asked = true;
+    // the geometry asked for again at the same poses and margin would give the same answer:
+    // the entry is left as the request that found it left it (kept or carried, (9.11)-(9.12))
+    if (!entry.restingKnown || entry.restingMargin != margin ||
+        !samePose(poseA, entry.restingPoseA) || !samePose(poseB, entry.restingPoseB)) {
+        return std::nullopt;
+    }
+    return entry.restingTouches;
+}
+
+void PairGeometryCache::rememberRestingTouch(std::uint32_t other, const Transform& poseA,
+                                             const Transform& poseB, Real margin, bool touches)
+{
+    const std::size_t index = indexOf(other);
+    if (index == m_entries.size()) {
+        return;
+    }
+    Entry& entry = m_entries[index];
+    entry.restingKnown = true;
+    entry.restingTouches = touches;
+    entry.restingMargin = margin;
+    entry.restingPoseA = poseA;
+    entry.restingPoseB = poseB;
 }
 
 void PairGeometryCache::forgetUnasked()

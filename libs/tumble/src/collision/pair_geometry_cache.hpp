@@ -8,6 +8,7 @@
 #include "tumble/math.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace tumble {
@@ -33,6 +34,16 @@ public:
                                        const Vec3& halfExtentsA, const Transform& poseB,
                                        const Vec3& halfExtentsB, Real margin,
                                        CuboidPairGeometry* carryInto = nullptr);
+
+    /// (10.4b) The touch test's answer for the pair with `other` while both bodies rest: the one
+    /// remembered at exactly these poses and margin, if no geometry was asked for since. The
+    /// pair counts as asked (it is not forgotten). Empty if there is none.
+    std::optional<bool> restingTouch(std::uint32_t other, const Transform& poseA,
+                                     const Transform& poseB, Real margin);
+    /// Remembers the touch test's answer just found (through geometry) for the pair with `other`
+    /// at these poses and margin.
+    void rememberRestingTouch(std::uint32_t other, const Transform& poseA, const Transform& poseB,
+                              Real margin, bool touches);
 
     /// Asks the memory for the look-up table and the first entry's header and first points,
     /// ahead of the body's first request of a step (its pairs come in the same order each step).
@@ -66,7 +77,16 @@ private:
         Vec3 halfExtentsA{0.0};
         Vec3 halfExtentsB{0.0};
         CuboidPairGeometry geometry{};
+        /// (10.4b) The touch test's answer at these poses and margin, valid while `restingKnown`
+        /// (cleared by every request for the geometry).
+        bool restingKnown = false;
+        bool restingTouches = false;
+        Real restingMargin = 0.0;
+        Transform restingPoseA{};
+        Transform restingPoseB{};
     };
+    /// The entry kept for `other`, or m_entries.size().
+    [[nodiscard]] std::size_t indexOf(std::uint32_t other) const;
     /// The other side of each entry, apart from the entries so that finding one reads little.
     std::vector<std::uint32_t> m_others;
     std::vector<Entry> m_entries;

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace tumble {
 
@@ -108,9 +109,14 @@ Real reachOver(const Body& body, const Vec3& gravity, Real horizon)
     if (body.isStatic()) {
         return 0.0;
     }
+    const Real drift = glm::length(gravity) * horizon;
+    if (body.linearVelocity == Vec3(0.0) && body.angularVelocity == Vec3(0.0)) {
+        // a body asleep: 0 + 0 r + drift is drift, bit for bit
+        return horizon * drift;
+    }
     const Real radius = glm::length(body.shape.halfExtents());
-    return horizon * (glm::length(body.linearVelocity) + glm::length(body.angularVelocity) * radius +
-                      glm::length(gravity) * horizon);
+    return horizon *
+           (glm::length(body.linearVelocity) + glm::length(body.angularVelocity) * radius + drift);
 }
 
 Material mixMaterials(const Material& dynamic, const std::optional<Material>& other)
@@ -152,6 +158,25 @@ bool mayTouch(std::span<BodySlot> slots, std::uint32_t slotA, std::uint32_t slot
     if (touches && manifold != nullptr) {
         *manifold = manifoldWithin(geometry, margin);
     }
+    return touches;
+}
+
+bool restingMayTouch(std::span<BodySlot> slots, std::uint32_t slotA, std::uint32_t slotB,
+                     Real tolerance, Real reachA, Real reachB, bool carry)
+{
+    const Real margin = tolerance + reachA + reachB;
+    const Body& a = slots[slotA].body;
+    const Body& b = slots[slotB].body;
+    const Transform poseA{a.position, a.orientation};
+    const Transform poseB{b.position, b.orientation};
+    const std::uint32_t owner = pairGeometryOwner(slots, slotA, slotB);
+    const std::uint32_t other = owner == slotA ? slotB : slotA;
+    PairGeometryCache& kept = slots[owner].pairGeometry;
+    if (const std::optional<bool> touches = kept.restingTouch(other, poseA, poseB, margin)) {
+        return *touches;
+    }
+    const bool touches = mayTouch(slots, slotA, slotB, tolerance, reachA, reachB, carry);
+    kept.rememberRestingTouch(other, poseA, poseB, margin, touches);
     return touches;
 }
 

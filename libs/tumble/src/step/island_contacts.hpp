@@ -63,6 +63,13 @@ bool mayTouch(std::span<BodySlot> slots, std::uint32_t slotA, std::uint32_t slot
               Real tolerance, Real reachA, Real reachB, bool carry,
               PairManifold* manifold = nullptr);
 
+/// mayTouch for a pair of bodies that both rest (asleep or static) (10.4b): the answer the
+/// pair's owner remembers from the last test at the same poses and margin, else mayTouch's
+/// (remembered). No points are found: an island woken in the step finds its resting pairs'
+/// points itself.
+bool restingMayTouch(std::span<BodySlot> slots, std::uint32_t slotA, std::uint32_t slotB,
+                     Real tolerance, Real reachA, Real reachB, bool carry);
+
 /// The slot whose kept pair geometry (9.11) holds the pair (slotA < slotB): the dynamic body of
 /// the two, the lower if both are. Work on pairs goes to threads grouped by it (11.5c).
 inline std::uint32_t pairGeometryOwner(std::span<const BodySlot> slots, std::uint32_t slotA,

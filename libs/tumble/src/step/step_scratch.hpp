@@ -26,6 +26,9 @@ struct StepScratch {
     OwnerGroups pairGroups;
     /// With the soft step, each pair's points within the narrow phase's margin (mayTouch).
     std::vector<PairManifold> pairManifolds;
+    /// 1 for a pair whose bodies both rest (static or asleep) at the test: its answer is the
+    /// one kept while it rests, and its points are found only if its island wakes (10.4b).
+    std::vector<std::uint8_t> pairAtRest;
     /// The broad phase's pairs that may touch, as slot indices, and each one's pair index.
     std::vector<ProxyPair> links;
     std::vector<std::uint32_t> linkPairs;
