@@ -175,9 +175,15 @@ void solveSoft(std::span<SoftManifold> manifolds, std::span<SoftBody> bodies,
 
 void restituteManifold(SoftManifold& m, std::span<SoftBody> bodies, Real threshold)
 {
+    const auto bouncing = [&](const SoftPoint& p) {
+        return bounces(p.relativeVelocity, p.maxNormalImpulse, threshold);
+    };
+    if (std::none_of(m.points.begin(), m.points.begin() + m.pointCount, bouncing)) {
+        return;
+    }
     SoftPair pair(bodies[m.bodyA], bodies[m.bodyB]);
     const auto restitute = [&](SoftPoint& p) {
-        if (p.relativeVelocity > -threshold || p.maxNormalImpulse == 0.0) {
+        if (!bouncing(p)) {
             return;
         }
         const Real normalBefore = pair.normalVelocity(m.normal, p);

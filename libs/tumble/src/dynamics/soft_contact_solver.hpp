@@ -163,7 +163,15 @@ void restituteSoft(std::span<SoftManifold> manifolds, std::span<SoftBody> bodies
                    Real threshold, const SoftColours& colours, int threads,
                    SoftLanes* lanes = nullptr);
 
-/// restituteSoft on one manifold of elasticity other than zero.
+/// (12.6): whether a point restitution acts on: it began the step approaching faster than
+/// `threshold` (relativeVelocity < -threshold) and pushed in the sub-steps.
+inline bool bounces(Real relativeVelocity, Real maxNormalImpulse, Real threshold)
+{
+    return !(relativeVelocity > -threshold || maxNormalImpulse == 0.0);
+}
+
+/// restituteSoft on one manifold of elasticity other than zero; a manifold none of whose points
+/// bounces is left as it is.
 void restituteManifold(SoftManifold& manifold, std::span<SoftBody> bodies, Real threshold);
 
 /// What a step leaves of a contact: its impulses for the next step's warm start (12.5) and its

@@ -50,12 +50,26 @@ SoftManifold restitutionRowsOf(const LaneBlock& block, std::uint32_t lane)
     return m;
 }
 
-/// restituteManifold on each bouncing lane of the blocks, its impulses and work written back.
+/// Whether restituteManifold acts on a point of the lane's manifold (12.6): one that approached
+/// faster than the threshold and pushed in the sub-steps.
+bool bouncesInLane(const LaneBlock& block, std::uint32_t lane, Real threshold)
+{
+    for (int k = 0; k < 4 && block.points[k].active[lane] != 0; ++k) {
+        const LanePoint& p = block.points[k];
+        if (bounces(p.relativeVelocity[lane], p.maxNormalImpulse[lane], threshold)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+/// restituteManifold on each bouncing lane of the blocks, its impulses and work written back;
+/// a lane whose points none bounce is left as it is (the manifold's pass would change nothing).
 void restituteBlocks(std::span<LaneBlock> blocks, std::span<SoftBody> bodies, Real threshold)
 {
     for (LaneBlock& block : blocks) {
         for (std::uint32_t lane = 0; lane < block.lanes; ++lane) {
-            if (block.restitution[lane] == 0.0) {
+            if (block.restitution[lane] == 0.0 || !bouncesInLane(block, lane, threshold)) {
                 continue;
             }
             SoftManifold m = restitutionRowsOf(block, lane);
