@@ -245,6 +245,16 @@ TEST(SoftStep, APileComesToRestTheSameForAnyThreadsAndItsLedgersBalance)
     }
 }
 
+/// Whether every body's vertical speed after the step that woke them is far below the g dt
+/// a body on no contact would have.
+void expectWokenAndHeld(const World& world, const std::vector<BodyId>& bodies)
+{
+    for (const BodyId id : bodies) {
+        EXPECT_FALSE(world.body(id).asleep);
+        EXPECT_LT(std::abs(world.body(id).linearVelocity.y), 1e-2 * kGravity / 60.0);
+    }
+}
+
 TEST(SoftStep, AColumnWokenFromSleepStandsOnItsContactsFromItsFirstStep)
 {
     // (10.4b): while the column sleeps its pairs keep their test's answer and find no points;
@@ -259,11 +269,34 @@ TEST(SoftStep, AColumnWokenFromSleepStandsOnItsContactsFromItsFirstStep)
     }
     world.applyImpulse(column.back(), Vec3(0.05, 0.0, 0.0), world.body(column.back()).position);
     world.step(1.0 / 60.0);
-    for (const BodyId cube : column) {
-        EXPECT_FALSE(world.body(cube).asleep);
-        // a cube on no contact would fall at g dt = 0.16 m/s after the step
-        EXPECT_LT(std::abs(world.body(cube).linearVelocity.y), 1e-2 * kGravity / 60.0);
+    expectWokenAndHeld(world, column);
+}
+
+TEST(SoftStep, ALargeIslandWokenFromSleepOnTwoThreadsStandsOnItsContacts)
+{
+    // the same on an island large enough to take both threads (11.5c), whose narrow phase
+    // places its contacts from the pairs' point counts
+    WorldSettings settings = softSettings();
+    settings.allowSleep = true;
+    settings.threads = 2;
+    World world = testing::worldWithGround(settings);
+    std::vector<BodyId> cubes;
+    for (int layer = 0; layer < 3; ++layer) {
+        for (int i = 0; i < 100; ++i) {
+            cubes.push_back(world.createBody(
+                BodyDef{.shape = Cuboid{Vec3(1.0)},
+                        .position = Vec3((i % 10) * 1.0, 0.5 + layer, (i / 10) * 1.0),
+                        .material = Material{.restitution = 0.0, .friction = 0.5}}));
+        }
     }
+    testing::simulate(world, 2.0, 1.0 / 60.0);
+    for (const BodyId cube : cubes) {
+        ASSERT_TRUE(world.body(cube).asleep);
+    }
+    world.applyImpulse(cubes.back(), Vec3(0.05, 0.0, 0.0), world.body(cubes.back()).position);
+    world.step(1.0 / 60.0);
+    EXPECT_GE(world.solverStatistics().contactPoints, 1024u);
+    expectWokenAndHeld(world, cubes);
 }
 
 /// Three layers of 10 x 10 cubes, each layer dropped 0.2 m onto the one below, with a twist:

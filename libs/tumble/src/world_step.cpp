@@ -100,6 +100,7 @@ void World::findPairs(detail::StepScratch& scratch, Real dt)
     scratch.pairTouches.assign(pairs.size(), 0);
     const bool carry = m_settings.solver == ContactSolver::Soft;
     scratch.pairManifolds.resize(carry ? pairs.size() : 0);
+    scratch.pairHasPoints.assign(carry ? pairs.size() : 0, 0);
     scratch.pairAtRest.assign(pairs.size(), 0);
     const auto testPair = [&](std::size_t k) { testBroadPair(scratch, k, dt); };
     const int threads = pairs.size() >= kLargeIslandPairs ? threadCount() : 1;
@@ -179,6 +180,9 @@ void World::testBroadPair(detail::StepScratch& scratch, std::size_t k, Real dt)
                : mayTouch(m_slots, lower, upper, tolerance, reachLower, reachUpper, carry,
                           manifold);
     scratch.pairTouches[k] = touches ? 1 : 0;
+    if (manifold != nullptr) {
+        scratch.pairHasPoints[k] = manifold->pointCount > 0 ? 1 : 0;
+    }
 }
 
 void World::buildStepIslands(detail::StepScratch& scratch, Real dt)
@@ -249,6 +253,7 @@ void World::addIslandPairs(detail::StepScratch& scratch, std::span<const std::ui
     island.pairs.clear();
     island.pairSolvers.clear();
     island.pairManifolds.clear();
+    island.pairHasPoints.clear();
     const std::span<const std::uint32_t> bodies = island.bodies;
     for (std::size_t i = 0; i < bodies.size(); ++i) {
         scratch.islandIndex[bodies[i]] = static_cast<std::uint32_t>(i);
@@ -274,8 +279,11 @@ void World::addIslandPairs(detail::StepScratch& scratch, std::span<const std::ui
                      reachOver(m_slots[lower].body, m_settings.gravity, dt),
                      reachOver(m_slots[upper].body, m_settings.gravity, dt), true,
                      &scratch.pairManifolds[broadPair]);
+            scratch.pairHasPoints[broadPair] =
+                scratch.pairManifolds[broadPair].pointCount > 0 ? 1 : 0;
         }
         island.pairManifolds.push_back(&scratch.pairManifolds[broadPair]);
+        island.pairHasPoints.push_back(scratch.pairHasPoints[broadPair]);
     }
 }
 

@@ -28,6 +28,9 @@ struct CoupledIsland {
     /// by the broad phase's test (mayTouch) while the pair's geometry was at hand; valid for
     /// the step (the soft step's narrow phase reads them instead of asking the pair again).
     std::vector<const PairManifold*> pairManifolds;
+    /// With pairManifolds, 1 where the pair's manifold has points: the narrow phase places its
+    /// contacts from these bytes rather than from the manifolds, a cache line each.
+    std::vector<std::uint8_t> pairHasPoints;
 };
 
 /// Advances the island's bodies by dt together. Writes only the slots of `island.bodies`.

@@ -186,7 +186,8 @@ namespace {
 /// over the same horizon with carried geometry (the soft step) on an island that has them.
 bool readsFoundManifolds(const CoupledIsland& island, bool carry)
 {
-    return carry && island.pairManifolds.size() == island.pairs.size() && !island.pairs.empty();
+    return carry && island.pairManifolds.size() == island.pairs.size() &&
+           island.pairHasPoints.size() == island.pairs.size() && !island.pairs.empty();
 }
 
 /// The contact of the island's pair k, if any point is within the margin.
@@ -246,11 +247,11 @@ void findPairContactsOverThreads(const CoupledIsland& island, std::span<BodySlot
         std::uint32_t count = 0;
         for (std::size_t k = 0; k < pairs; ++k) {
             place[k] = count;
-            count += island.pairManifolds[k]->pointCount > 0 ? 1 : 0;
+            count += island.pairHasPoints[k];
         }
         contacts.resize(count);
         parallelFor(pairs, threads, [&](std::size_t k) {
-            if (island.pairManifolds[k]->pointCount > 0) {
+            if (island.pairHasPoints[k] != 0) {
                 findPairContact(island, slots, tolerance, reach, carry, k, contacts[place[k]]);
             }
         });

@@ -26,6 +26,8 @@ struct StepScratch {
     OwnerGroups pairGroups;
     /// With the soft step, each pair's points within the narrow phase's margin (mayTouch).
     std::vector<PairManifold> pairManifolds;
+    /// With them, 1 where the manifold has points (CoupledIsland::pairHasPoints).
+    std::vector<std::uint8_t> pairHasPoints;
     /// 1 for a pair whose bodies both rest (static or asleep) at the test: its answer is the
     /// one kept while it rests, and its points are found only if its island wakes (10.4b).
     std::vector<std::uint8_t> pairAtRest;
