@@ -144,8 +144,11 @@ void storeSoftWarmStart(const CoupledIsland& island, std::span<BodySlot> slots,
             const IslandContact& contact = contacts[index];
             const SoftContactResult& result = results[resultOf[index]];
             BodySlot& slot = slots[island.bodies[contact.owner]];
-            slot.softContactsPose = Transform{slot.body.position, slot.body.orientation};
-            CachedSoftContact kept;
+            if (slot.softContacts.empty()) {
+                slot.softContactsPose = Transform{slot.body.position, slot.body.orientation};
+            }
+            // built where it is kept: a temporary is a cleared copy more
+            CachedSoftContact& kept = slot.softContacts.emplace_back();
             kept.other = contact.ownerKey;
             kept.pointCount = result.pointCount;
             for (int k = 0; k < result.pointCount; ++k) {
@@ -155,7 +158,6 @@ void storeSoftWarmStart(const CoupledIsland& island, std::span<BodySlot> slots,
             }
             kept.frictionImpulse = result.frictionImpulse;
             kept.twistImpulse = result.twistImpulse;
-            slot.softContacts.push_back(kept);
         }
     });
 }
