@@ -102,6 +102,17 @@ void World::findPairs(detail::StepScratch& scratch, Real dt)
     scratch.pairManifolds.resize(carry ? pairs.size() : 0);
     scratch.pairHasPoints.assign(carry ? pairs.size() : 0, 0);
     scratch.pairAtRest.assign(pairs.size(), 0);
+    // each body's reach once when the pairs outnumber the bodies (3.4 a body on the pyramid),
+    // else each pair's two (most bodies of a scene of bodies alone pair with none)
+    scratch.reach.clear();
+    if (pairs.size() > m_slots.size()) {
+        scratch.reach.resize(m_slots.size());
+        parallelFor(m_slots.size(), slotThreads, [&](std::size_t index) {
+            scratch.reach[index] = m_slots[index].alive
+                                       ? reachOver(m_slots[index].body, m_settings.gravity, dt)
+                                       : 0.0;
+        });
+    }
     const auto testPair = [&](std::size_t k) { testBroadPair(scratch, k, dt); };
     const int threads = pairs.size() >= kLargeIslandPairs ? threadCount() : 1;
     if (threads > 1) {
@@ -160,8 +171,12 @@ void World::testBroadPair(detail::StepScratch& scratch, std::size_t k, Real dt)
     const std::uint32_t upper = std::max(a, b);
     // each side's reach found here, not for every body: most bodies of a scene of bodies alone
     // pair with none
-    const Real reachLower = reachOver(m_slots[lower].body, m_settings.gravity, dt);
-    const Real reachUpper = reachOver(m_slots[upper].body, m_settings.gravity, dt);
+    const auto reachOf = [&](std::uint32_t slot) {
+        return scratch.reach.empty() ? reachOver(m_slots[slot].body, m_settings.gravity, dt)
+                                     : scratch.reach[slot];
+    };
+    const Real reachLower = reachOf(lower);
+    const Real reachUpper = reachOf(upper);
     const Real tolerance = m_settings.contactTolerance;
     // the soft step carries a pair's geometry with its bodies (9.12), and its narrow phase over
     // the same step reads the points found here

@@ -18,6 +18,9 @@ struct StepScratch {
     std::vector<BroadPhaseProxy> proxies;
     /// The box of each slot over the step (empty for a dead slot).
     std::vector<Aabb> sweptBoxes;
+    /// Each slot's reachOver over the step, when found once a body (World::findPairs), else
+    /// empty.
+    std::vector<Real> reach;
     BroadPhase broadPhase;
     /// Whether each of the broad phase's pairs may touch within the step (10.4), and the body
     /// whose kept geometry it writes, grouped for the threads (11.5c).
