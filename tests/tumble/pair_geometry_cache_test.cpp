@@ -119,28 +119,33 @@ TEST(PairGeometryCache, PairsNotAskedForAreForgotten)
     EXPECT_EQ(cache.size(), 1u);
 }
 
-TEST(PairGeometryCache, ARestingPairsAnswerHoldsOnlyAtItsPosesAndMarginUntilAskedAgain)
+TEST(PairGeometryCache, ARestingPairsAnswerHoldsOnlyAtItsPosesSizesAndMarginUntilAskedAgain)
 {
     // (10.4b)
     PairGeometryCache cache;
-    EXPECT_FALSE(cache.restingTouch(7, kBelow, kAbove, kMargin)) << "no entry yet";
+    const auto answer = [&] {
+        return cache.restingTouch(7, kBelow, kUnit, kAbove, kUnit, kMargin);
+    };
+    EXPECT_FALSE(answer()) << "no entry yet";
     cache.geometry(7, kBelow, kUnit, kAbove, kUnit, kMargin);
-    EXPECT_FALSE(cache.restingTouch(7, kBelow, kAbove, kMargin)) << "nothing remembered";
+    EXPECT_FALSE(answer()) << "nothing remembered";
     cache.rememberRestingTouch(7, kBelow, kAbove, kMargin, true);
-    EXPECT_EQ(cache.restingTouch(7, kBelow, kAbove, kMargin), std::optional<bool>(true));
+    EXPECT_EQ(answer(), std::optional<bool>(true));
     cache.rememberRestingTouch(7, kBelow, kAbove, kMargin, false);
-    EXPECT_EQ(cache.restingTouch(7, kBelow, kAbove, kMargin), std::optional<bool>(false));
-    // any other pose, even within (9.11)'s reach, or another margin: not known
-    EXPECT_FALSE(cache.restingTouch(7, moved(kBelow, 1e-12, 0.0), kAbove, kMargin));
-    EXPECT_FALSE(cache.restingTouch(7, kBelow, moved(kAbove, 0.0, 1e-12), kMargin));
-    EXPECT_FALSE(cache.restingTouch(7, kBelow, kAbove, 2.0 * kMargin));
+    EXPECT_EQ(answer(), std::optional<bool>(false));
+    // any other pose, even within (9.11)'s reach, another size or another margin: not known
+    EXPECT_FALSE(cache.restingTouch(7, moved(kBelow, 1e-12, 0.0), kUnit, kAbove, kUnit, kMargin));
+    EXPECT_FALSE(cache.restingTouch(7, kBelow, kUnit, moved(kAbove, 0.0, 1e-12), kUnit, kMargin));
+    EXPECT_FALSE(cache.restingTouch(7, kBelow, kUnit, kAbove, kUnit, 2.0 * kMargin));
+    EXPECT_FALSE(cache.restingTouch(7, kBelow, 0.5 * kUnit, kAbove, kUnit, kMargin));
+    EXPECT_FALSE(cache.restingTouch(7, kBelow, kUnit, kAbove, 2.0 * kUnit, kMargin));
     // asking only for the answer keeps the pair; asking for the geometry forgets the answer
     cache.forgetUnasked();
-    EXPECT_EQ(cache.restingTouch(7, kBelow, kAbove, kMargin), std::optional<bool>(false));
+    EXPECT_EQ(answer(), std::optional<bool>(false));
     cache.forgetUnasked();
     EXPECT_EQ(cache.size(), 1u);
     cache.geometry(7, kBelow, kUnit, kAbove, kUnit, kMargin);
-    EXPECT_FALSE(cache.restingTouch(7, kBelow, kAbove, kMargin));
+    EXPECT_FALSE(answer());
 }
 
 TEST(PairGeometryCache, ARestingPairTestedAgainGivesTheAnswerMayTouchGives)

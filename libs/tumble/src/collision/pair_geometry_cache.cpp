@@ -79,7 +79,9 @@ bool samePose(const Transform& pose, const Transform& kept)
 } // namespace
 
 std::optional<bool> PairGeometryCache::restingTouch(std::uint32_t other, const Transform& poseA,
-                                                    const Transform& poseB, Real margin)
+                                                    const Vec3& halfExtentsA,
+                                                    const Transform& poseB,
+                                                    const Vec3& halfExtentsB, Real margin)
 {
     const std::size_t index = indexOf(other);
     if (index == m_entries.size()) {
@@ -87,10 +89,12 @@ std::optional<bool> PairGeometryCache::restingTouch(std::uint32_t other, const T
     }
     Entry& entry = m_entries[index];
     entry.asked = true;
-    // the geometry asked for again at the same poses and margin would give the same answer:
-    // the entry is left as the request that found it left it (kept or carried, (9.11)-(9.12))
+    // the geometry asked for again at the same poses, sizes and margin would give the same
+    // answer: the entry is left as the request that found it left it (kept or carried,
+    // (9.11)-(9.12)), and its sizes are those of that request
     if (!entry.restingKnown || entry.restingMargin != margin ||
-        !samePose(poseA, entry.restingPoseA) || !samePose(poseB, entry.restingPoseB)) {
+        !samePose(poseA, entry.restingPoseA) || !samePose(poseB, entry.restingPoseB) ||
+        entry.halfExtentsA != halfExtentsA || entry.halfExtentsB != halfExtentsB) {
         return std::nullopt;
     }
     return entry.restingTouches;

@@ -36,10 +36,11 @@ public:
                                        CuboidPairGeometry* carryInto = nullptr);
 
     /// (10.4b) The touch test's answer for the pair with `other` while both bodies rest: the one
-    /// remembered at exactly these poses and margin, if no geometry was asked for since. The
-    /// pair counts as asked (it is not forgotten). Empty if there is none.
+    /// remembered at exactly these poses, sizes and margin, if no geometry was asked for since.
+    /// The pair counts as asked (it is not forgotten). Empty if there is none.
     std::optional<bool> restingTouch(std::uint32_t other, const Transform& poseA,
-                                     const Transform& poseB, Real margin);
+                                     const Vec3& halfExtentsA, const Transform& poseB,
+                                     const Vec3& halfExtentsB, Real margin);
     /// Remembers the touch test's answer just found (through geometry) for the pair with `other`
     /// at these poses and margin.
     void rememberRestingTouch(std::uint32_t other, const Transform& poseA, const Transform& poseB,

@@ -172,7 +172,8 @@ bool restingMayTouch(std::span<BodySlot> slots, std::uint32_t slotA, std::uint32
     const std::uint32_t owner = pairGeometryOwner(slots, slotA, slotB);
     const std::uint32_t other = owner == slotA ? slotB : slotA;
     PairGeometryCache& kept = slots[owner].pairGeometry;
-    if (const std::optional<bool> touches = kept.restingTouch(other, poseA, poseB, margin)) {
+    if (const std::optional<bool> touches = kept.restingTouch(
+            other, poseA, a.shape.halfExtents(), poseB, b.shape.halfExtents(), margin)) {
         return *touches;
     }
     const bool touches = mayTouch(slots, slotA, slotB, tolerance, reachA, reachB, carry);
