@@ -64,7 +64,7 @@ bool mayTouch(std::span<BodySlot> slots, std::uint32_t slotA, std::uint32_t slot
               PairManifold* manifold = nullptr);
 
 /// mayTouch for a pair of bodies that both rest (asleep or static) (10.4b): the answer the
-/// pair's owner remembers from the last test at the same poses and margin, else mayTouch's
+/// pair's owner remembers from the last test at the same poses, sizes and margin, else mayTouch's
 /// (remembered). No points are found: an island woken in the step finds its resting pairs'
 /// points itself.
 bool restingMayTouch(std::span<BodySlot> slots, std::uint32_t slotA, std::uint32_t slotB,
