@@ -1,5 +1,5 @@
-// World's step stages around the solvers: the broad phase, the islands and the coupled islands'
-// advance (docs/physics/10-broad-phase.md, 11-island-solver.md).
+// World's step stages after the broad phase (world_pairs.cpp): the islands and the coupled
+// islands' advance (docs/physics/10-broad-phase.md, 11-island-solver.md).
 #include "tumble/world.hpp"
 
 #include "body_slot.hpp"
@@ -22,30 +22,6 @@ namespace tumble {
 
 namespace {
 
-/// (11.5c): an island of at least this many linked pairs (some kColouredSweepPoints points, at
-/// four a face contact) is large: it takes all the threads inside its step. The broad phase's
-/// touch test takes the threads from as many pairs.
-constexpr std::size_t kLargeIslandPairs = 256;
-/// A world of at least this many slots finds its bodies' boxes and forgets its pairs gone over
-/// the threads.
-constexpr std::size_t kLargeWorldSlots = 1024;
-/// Bodies whose pairs a thread takes at a time in the touch test: a pair whose geometry is
-/// carried or searched costs many times one whose geometry is kept, and the bodies that moved
-/// lie together (the lower layers of a pile, what just landed).
-constexpr std::size_t kPairOwnersPerChunk = 16;
-/// How many pairs ahead a body's kept geometry is asked for (prefetch.hpp).
-constexpr std::size_t kPairsPrefetchedAhead = 4;
-
-/// A bound on the angular speed over a torque-free step: |w| <= |L| / I_min <= |w0| I_max / I_min
-/// (the swept box of (10.3) needs one for the whole step).
-Vec3 angularSpeedBound(const Body& body)
-{
-    const Vec3 inertia = body.inertiaBody();
-    const Real ratio = std::max({inertia.x, inertia.y, inertia.z}) /
-                       std::min({inertia.x, inertia.y, inertia.z});
-    return body.angularVelocity * ratio;
-}
-
 /// Whether a box can come within `tolerance` of the half-space: its lowest corner along the
 /// normal, n . c - sum |n_i| e_i, against the plane.
 bool mayReach(const Aabb& box, const StaticPlane& plane, Real tolerance)
@@ -57,148 +33,7 @@ bool mayReach(const Aabb& box, const StaticPlane& plane, Real tolerance)
     return lowest <= tolerance;
 }
 
-/// Whether the body keeps its pose over the step unless an island wakes it: static or asleep.
-bool restsThisStep(const Body& body)
-{
-    return body.isStatic() || body.asleep;
-}
-
 } // namespace
-
-void World::findPairs(detail::StepScratch& scratch, Real dt)
-{
-    scratch.proxies.clear();
-    scratch.sweptBoxes.assign(m_slots.size(), Aabb{});
-    const Real margin = m_settings.contactTolerance;
-    const int slotThreads = m_slots.size() >= kLargeWorldSlots ? threadCount() : 1;
-    // each slot writes only its own box
-    parallelFor(m_slots.size(), slotThreads, [&](std::size_t index) {
-        const BodySlot& slot = m_slots[index];
-        if (!slot.alive) {
-            return;
-        }
-        const Body& body = slot.body;
-        const Transform pose{body.position, body.orientation};
-        // a sleeping body does not move, but pairs like any dynamic body: its island wakes
-        // with it (7.4)
-        const bool moving = !restsThisStep(body);
-        scratch.sweptBoxes[index] =
-            moving ? sweptCuboidAabb(pose, body.shape.halfExtents(), body.linearVelocity,
-                                     m_settings.gravity, angularSpeedBound(body), dt, margin)
-                   : expanded(cuboidAabb(pose, body.shape.halfExtents()), margin);
-    });
-    for (std::uint32_t index = 0; index < m_slots.size(); ++index) {
-        if (m_slots[index].alive) {
-            scratch.proxies.push_back(BroadPhaseProxy{scratch.sweptBoxes[index], index,
-                                                      !m_slots[index].body.isStatic()});
-        }
-    }
-    scratch.broadPhase.update(scratch.proxies, threadCount());
-    // narrow phase's first test: boxes that cannot touch within the step link nothing, and a
-    // body near another but apart keeps the exact path (10.4)
-    const std::span<const ProxyPair> pairs = scratch.broadPhase.pairs();
-    scratch.pairTouches.assign(pairs.size(), 0);
-    const bool carry = m_settings.solver == ContactSolver::Soft;
-    scratch.pairManifolds.resize(carry ? pairs.size() : 0);
-    scratch.pairHasPoints.assign(carry ? pairs.size() : 0, 0);
-    scratch.pairAtRest.assign(pairs.size(), 0);
-    // each body's reach once when the pairs outnumber the bodies (3.4 a body on the pyramid),
-    // else each pair's two (most bodies of a scene of bodies alone pair with none)
-    scratch.reach.clear();
-    if (pairs.size() > m_slots.size()) {
-        scratch.reach.resize(m_slots.size());
-        parallelFor(m_slots.size(), slotThreads, [&](std::size_t index) {
-            scratch.reach[index] = m_slots[index].alive
-                                       ? reachOver(m_slots[index].body, m_settings.gravity, dt)
-                                       : 0.0;
-        });
-    }
-    const auto testPair = [&](std::size_t k) { testBroadPair(scratch, k, dt); };
-    const int threads = pairs.size() >= kLargeIslandPairs ? threadCount() : 1;
-    if (threads > 1) {
-        // a pair writes the geometry its dynamic body keeps (9.11): each body's pairs go to
-        // one thread, in their order (11.5c)
-        scratch.pairOwners.resize(pairs.size());
-        for (std::size_t k = 0; k < pairs.size(); ++k) {
-            const std::uint32_t a = scratch.proxies[pairs[k].a].body;
-            const std::uint32_t b = scratch.proxies[pairs[k].b].body;
-            scratch.pairOwners[k] = pairGeometryOwner(m_slots, std::min(a, b), std::max(a, b));
-        }
-        scratch.pairGroups.build(scratch.pairOwners, m_slots.size());
-        const OwnerGroups& groups = scratch.pairGroups;
-        parallelForBalanced(groups.count(), threads, kPairOwnersPerChunk, [&](std::size_t g) {
-            if (g + 1 < groups.count() && !groups.group(g + 1).empty()) {
-                m_slots[scratch.pairOwners[groups.group(g + 1).front()]].pairGeometry.prefetch();
-            }
-            for (const std::uint32_t k : groups.group(g)) {
-                testPair(k);
-            }
-        });
-    } else {
-        // the pairs come sorted by their lower slot: a body's kept geometry is asked for ahead
-        // of its first pair
-        const auto lowerOf = [&](std::size_t k) {
-            return std::min(scratch.proxies[pairs[k].a].body, scratch.proxies[pairs[k].b].body);
-        };
-        for (std::size_t k = 0; k < pairs.size(); ++k) {
-            const std::size_t ahead = k + kPairsPrefetchedAhead;
-            if (ahead < pairs.size() && lowerOf(ahead) != lowerOf(ahead - 1)) {
-                m_slots[lowerOf(ahead)].pairGeometry.prefetch();
-            }
-            testPair(k);
-        }
-    }
-    scratch.links.clear();
-    scratch.linkPairs.clear();
-    for (std::size_t k = 0; k < pairs.size(); ++k) {
-        if (scratch.pairTouches[k] != 0) {
-            scratch.links.push_back(
-                {scratch.proxies[pairs[k].a].body, scratch.proxies[pairs[k].b].body});
-            scratch.linkPairs.push_back(static_cast<std::uint32_t>(k));
-        }
-    }
-    // (9.11): kept geometry nobody asked for since the last broad phase is of a pair gone
-    parallelFor(m_slots.size(), slotThreads,
-                [&](std::size_t index) { m_slots[index].pairGeometry.forgetUnasked(); });
-}
-
-void World::testBroadPair(detail::StepScratch& scratch, std::size_t k, Real dt)
-{
-    const ProxyPair& pair = scratch.broadPhase.pairs()[k];
-    const std::uint32_t a = scratch.proxies[pair.a].body;
-    const std::uint32_t b = scratch.proxies[pair.b].body;
-    const std::uint32_t lower = std::min(a, b);
-    const std::uint32_t upper = std::max(a, b);
-    // each side's reach found here, not for every body: most bodies of a scene of bodies alone
-    // pair with none
-    const auto reachOf = [&](std::uint32_t slot) {
-        return scratch.reach.empty() ? reachOver(m_slots[slot].body, m_settings.gravity, dt)
-                                     : scratch.reach[slot];
-    };
-    const Real reachLower = reachOf(lower);
-    const Real reachUpper = reachOf(upper);
-    const Real tolerance = m_settings.contactTolerance;
-    // the soft step carries a pair's geometry with its bodies (9.12), and its narrow phase over
-    // the same step reads the points found here
-    const bool carry = m_settings.solver == ContactSolver::Soft;
-    PairManifold* manifold = carry ? &scratch.pairManifolds[k] : nullptr;
-    // (10.4b): a pair neither of whose bodies moves keeps its answer while it rests, and finds
-    // its points only if its island wakes (addIslandPairs)
-    const bool atRest =
-        restsThisStep(m_slots[lower].body) && restsThisStep(m_slots[upper].body);
-    scratch.pairAtRest[k] = atRest ? 1 : 0;
-    if (atRest && manifold != nullptr) {
-        manifold->pointCount = 0;
-    }
-    const bool touches =
-        atRest ? restingMayTouch(m_slots, lower, upper, tolerance, reachLower, reachUpper, carry)
-               : mayTouch(m_slots, lower, upper, tolerance, reachLower, reachUpper, carry,
-                          manifold);
-    scratch.pairTouches[k] = touches ? 1 : 0;
-    if (manifold != nullptr) {
-        scratch.pairHasPoints[k] = manifold->pointCount > 0 ? 1 : 0;
-    }
-}
 
 void World::buildStepIslands(detail::StepScratch& scratch, Real dt)
 {
@@ -328,7 +163,7 @@ void World::advanceCoupledIslands(detail::StepScratch& scratch, Real dt)
     // split nor the order changes anything.
     scratch.smallIslands.clear();
     for (std::uint32_t k = 0; k < scratch.islands.size(); ++k) {
-        if (scratch.islands[k].pairs.size() >= kLargeIslandPairs && context.threads > 1) {
+        if (scratch.islands[k].pairs.size() >= detail::kLargeIslandPairs && context.threads > 1) {
             advance(k, context);
         } else {
             scratch.smallIslands.push_back(k);

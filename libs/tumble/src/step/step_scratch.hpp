@@ -14,6 +14,11 @@
 
 namespace tumble::detail {
 
+/// (11.5c): an island of at least this many linked pairs (some kColouredSweepPoints points, at
+/// four a face contact) is large: it takes all the threads inside its step. The broad phase's
+/// touch test takes the threads from as many pairs.
+inline constexpr std::size_t kLargeIslandPairs = 256;
+
 struct StepScratch {
     std::vector<BroadPhaseProxy> proxies;
     /// The box of each slot over the step (empty for a dead slot).
