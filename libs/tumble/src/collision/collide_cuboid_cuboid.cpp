@@ -78,31 +78,45 @@ bool decidesMargin(const CuboidPairGeometry& geometry, Real margin)
     return geometry.complete || geometry.largestSeparation > margin;
 }
 
-PairManifold manifoldWithin(const CuboidPairGeometry& geometry, Real margin)
+void writeManifoldWithin(const CuboidPairGeometry& geometry, Real margin,
+                         PairManifold& manifold)
 {
+    manifold.pointCount = 0;
     if (geometry.largestSeparation > margin) {
-        return PairManifold{};
+        return;
     }
     // the clipped points within the margin, in clipping order (9.7); the edge point's separation
     // is that of its axis, never above the largest
     const auto isWithin = [&](const PairContactPoint& point) { return point.separation <= margin; };
     const auto begin = geometry.points.points.begin();
     const auto end = begin + geometry.points.count;
-    if (std::count_if(begin, end, isWithin) <= 4) {
+    const auto within = std::count_if(begin, end, isWithin);
+    if (within == geometry.points.count) {
+        // all of them: reduced where they lie (9.8)
+        reduceContactPoints(geometry.points, geometry.normal, manifold);
+        return;
+    }
+    if (within <= 4) {
         // nothing to reduce (9.8)
-        PairManifold manifold;
         manifold.normal = geometry.normal;
         for (auto point = begin; point != end; ++point) {
             if (isWithin(*point)) {
                 manifold.points[manifold.pointCount++] = *point;
             }
         }
-        return manifold;
+        return;
     }
-    ClippedPoints within;
-    within.count = static_cast<int>(std::copy_if(begin, end, within.points.begin(), isWithin) -
-                                    within.points.begin());
-    return reduceContactPoints(within, geometry.normal);
+    ClippedPoints kept;
+    kept.count = static_cast<int>(std::copy_if(begin, end, kept.points.begin(), isWithin) -
+                                  kept.points.begin());
+    reduceContactPoints(kept, geometry.normal, manifold);
+}
+
+PairManifold manifoldWithin(const CuboidPairGeometry& geometry, Real margin)
+{
+    PairManifold manifold;
+    writeManifoldWithin(geometry, margin, manifold);
+    return manifold;
 }
 
 PairManifold collideCuboids(const Transform& poseA, const Vec3& halfExtentsA,

@@ -44,4 +44,9 @@ bool decidesMargin(const CuboidPairGeometry& geometry, Real margin);
 /// the largest separation exceeds `margin`, else the points within it reduced to four (9.8).
 PairManifold manifoldWithin(const CuboidPairGeometry& geometry, Real margin);
 
+/// manifoldWithin written into `manifold`, whose normal is left as it was when no point is
+/// within `margin` (a narrow phase's manifolds are read only where they have points).
+void writeManifoldWithin(const CuboidPairGeometry& geometry, Real margin,
+                         PairManifold& manifold);
+
 } // namespace tumble

@@ -150,15 +150,16 @@ ClippedPoints clipIncidentFace(const CuboidFrame& reference, int referenceFace,
     return clipped;
 }
 
-PairManifold reduceContactPoints(const ClippedPoints& clipped, const Vec3& normal)
+void reduceContactPoints(const ClippedPoints& clipped, const Vec3& normal,
+                         PairManifold& manifold)
 {
-    PairManifold manifold;
     manifold.normal = normal;
+    manifold.pointCount = 0;
     if (clipped.count <= 4) {
         for (int i = 0; i < clipped.count; ++i) {
             manifold.points[manifold.pointCount++] = clipped.points[i];
         }
-        return manifold;
+        return;
     }
     const auto& points = clipped.points;
     const auto at = [&](int i) { return points[i].position; };
@@ -186,7 +187,7 @@ PairManifold reduceContactPoints(const ClippedPoints& clipped, const Vec3& norma
         manifold.points[0] = points[first];
         manifold.points[1] = points[second];
         manifold.pointCount = 2;
-        return manifold;
+        return;
     }
     // Counter-clockwise about the normal, so the area beyond an edge is the negative one.
     const std::array<int, 3> triangle =
@@ -199,7 +200,6 @@ PairManifold reduceContactPoints(const ClippedPoints& clipped, const Vec3& norma
     if (fourth >= 0) {
         manifold.points[manifold.pointCount++] = points[fourth];
     }
-    return manifold;
 }
 
 } // namespace tumble

@@ -26,8 +26,10 @@ int incidentFaceIndex(const CuboidFrame& box, const Vec3& referenceNormal);
 ClippedPoints clipIncidentFace(const CuboidFrame& reference, int referenceFace,
                                const CuboidFrame& incident, bool referenceIsB, Real margin);
 
-/// At most 4 of the points: the deepest, the farthest from it, then the two that add the most
-/// area to the quadrilateral, areas measured about `normal` (9.8).
-PairManifold reduceContactPoints(const ClippedPoints& clipped, const Vec3& normal);
+/// At most 4 of the points, written into `manifold` with `normal`: the deepest, the farthest
+/// from it, then the two that add the most area to the quadrilateral, areas measured about
+/// `normal` (9.8).
+void reduceContactPoints(const ClippedPoints& clipped, const Vec3& normal,
+                         PairManifold& manifold);
 
 } // namespace tumble

@@ -156,7 +156,7 @@ bool mayTouch(std::span<BodySlot> slots, std::uint32_t slotA, std::uint32_t slot
     const CuboidPairGeometry& geometry = pairGeometry(slots, slotA, slotB, margin, carry);
     const bool touches = !(geometry.largestSeparation > margin);
     if (touches && manifold != nullptr) {
-        *manifold = manifoldWithin(geometry, margin);
+        writeManifoldWithin(geometry, margin, *manifold);
     }
     return touches;
 }
@@ -204,8 +204,8 @@ bool findPairContact(const CoupledIsland& island, std::span<BodySlot> slots, Rea
         contact.manifold = *island.pairManifolds[k];
     } else {
         const Real margin = tolerance + reach[solverA] + reach[solverB];
-        contact.manifold =
-            manifoldWithin(pairGeometry(slots, slotA, slotB, margin, carry), margin);
+        writeManifoldWithin(pairGeometry(slots, slotA, slotB, margin, carry), margin,
+                            contact.manifold);
     }
     if (contact.manifold.pointCount == 0) {
         return false;
