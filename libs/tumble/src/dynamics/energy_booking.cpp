@@ -34,11 +34,11 @@ Real bookCorrection(Body& body, Real energyBefore, const Vec3& gravity)
     return energyAfter;
 }
 
-Real kineticEnergyWith(const Body& body, const Vec3& linear, const Vec3& angular)
+Real kineticEnergyWith(const InertialFrame& frame, const Vec3& linear, const Vec3& angular)
 {
-    const Vec3 bodySpin = glm::conjugate(body.orientation) * angular;
-    return 0.5 * body.mass * lengthSquared(linear) +
-           0.5 * glm::dot(body.inertiaBody() * bodySpin, bodySpin);
+    const Vec3 bodySpin = glm::conjugate(frame.orientation) * angular;
+    return 0.5 * frame.mass * lengthSquared(linear) +
+           0.5 * glm::dot(frame.inertia * bodySpin, bodySpin);
 }
 
 IslandWork sumPointWork(std::span<const ContactConstraint> constraints, int threads)

@@ -26,8 +26,28 @@ void bookContact(Body& body, const ContactWork& work, Real energyChange, bool im
 /// energy after it.
 Real bookCorrection(Body& body, Real energyBefore, const Vec3& gravity);
 
+/// What a body's kinetic energy depends on besides its velocities: its mass, its body-frame
+/// inertia diagonal and its orientation.
+struct InertialFrame {
+    Quat orientation{1.0, 0.0, 0.0, 0.0};
+    Vec3 inertia{0.0};
+    Real mass = 0.0;
+};
+
+inline InertialFrame inertialFrameOf(const Body& body)
+{
+    return {body.orientation, body.inertiaBody(), body.mass};
+}
+
+/// The kinetic energy a body of that frame has with velocities `linear` and `angular`, J:
+/// m |v|^2 / 2 + (I0 w0) . w0 / 2 with w0 = q* w q the spin in the body frame.
+Real kineticEnergyWith(const InertialFrame& frame, const Vec3& linear, const Vec3& angular);
+
 /// The kinetic energy `body` would have with velocities `linear` and `angular`, J.
-Real kineticEnergyWith(const Body& body, const Vec3& linear, const Vec3& angular);
+inline Real kineticEnergyWith(const Body& body, const Vec3& linear, const Vec3& angular)
+{
+    return kineticEnergyWith(inertialFrameOf(body), linear, angular);
+}
 
 /// Work of an island's contact impulses in one stage, J: the totals of its points' normal and
 /// friction work (8.2).

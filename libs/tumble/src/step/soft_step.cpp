@@ -38,6 +38,11 @@ struct SoftBuffers {
     /// What each contact's owner kept of it, in the contacts' order.
     std::vector<KeptImpulses> kept;
     std::vector<SoftBody> bodies;
+    /// Each body's mass, inertia and orientation at the step's start, and that orientation's
+    /// rotation transposed, R0^T: what the sub-steps read of the body (the world's copy stays
+    /// at the step's start until finish).
+    std::vector<InertialFrame> frames;
+    std::vector<Mat3> startRotationsT;
     std::vector<Real> energies;
     std::vector<Real> kineticStart;
     std::vector<Real> bodyWork;
@@ -138,12 +143,16 @@ void SoftStep::prepare(Real dt)
     m_buffers.bodies.resize(count + 1);
     m_buffers.bodies[count] = SoftBody{};
     m_buffers.centres.resize(count);
+    m_buffers.frames.resize(count);
+    m_buffers.startRotationsT.resize(count);
     // each body, each manifold and each kept impulse below writes only its own entry
     parallelFor(count, m_context.threads, [&](std::size_t i) {
         m_buffers.energies[i] = energyOf(body(i), m_settings.gravity);
         m_buffers.kineticStart[i] = body(i).kineticEnergy();
         m_buffers.bodies[i] = softBodyOf(body(i));
         m_buffers.centres[i] = body(i).position;
+        m_buffers.frames[i] = inertialFrameOf(body(i));
+        m_buffers.startRotationsT[i] = glm::transpose(body(i).rotation());
     });
     // narrow phase once a step: every point the bodies can reach within it (12.1)
     findIslandContacts(m_island, m_slots, m_context, dt, true, m_buffers.contacts);
@@ -224,7 +233,7 @@ void SoftStep::substep(Real h, const SoftSolveSettings& solve, bool bookLast)
         b.deltaPosition += h * b.linearVelocity;
         const Quat spin(0.0, b.angularVelocity.x, b.angularVelocity.y, b.angularVelocity.z);
         b.orientation = glm::normalize(b.orientation + (0.5 * h) * (spin * b.orientation));
-        b.deltaRotation = glm::mat3_cast(b.orientation) * glm::transpose(body(i).rotation());
+        b.deltaRotation = glm::mat3_cast(b.orientation) * m_buffers.startRotationsT[i];
     });
     solveSoft(m_buffers.manifolds, bodies, solve, false, colours, threads, lanes);
 }
@@ -236,15 +245,15 @@ void SoftStep::bookWorkAndGravity(Real h, bool bookWork)
     parallelFor(count, m_context.threads, [&](std::size_t i) {
         SoftBody& soft = m_buffers.bodies[i];
         if (bookWork) {
-            m_buffers.bodyWork[i] +=
-                kineticEnergyWith(body(i), soft.linearVelocity, soft.angularVelocity) -
-                m_buffers.kinetic[i];
+            m_buffers.bodyWork[i] += kineticEnergyWith(m_buffers.frames[i], soft.linearVelocity,
+                                                       soft.angularVelocity) -
+                                     m_buffers.kinetic[i];
         }
         if (h > 0.0) {
             soft.linearVelocity += m_settings.gravity * h;
         }
         m_buffers.kinetic[i] =
-            kineticEnergyWith(body(i), soft.linearVelocity, soft.angularVelocity);
+            kineticEnergyWith(m_buffers.frames[i], soft.linearVelocity, soft.angularVelocity);
     });
 }
 
