@@ -14,6 +14,54 @@ struct LaneMotion {
     Wide3 normalA, normalB;
 };
 
+#if TUMBLE_TRANSPOSE_BY_SHUFFLES
+/// A body's displacement and the first entry of its rotation since the step began start one row
+/// of eight doubles, the rest of the rotation fills the next (lane_transpose.hpp).
+static_assert(offsetof(SoftBody, deltaRotation) == offsetof(SoftBody, deltaPosition) + 56 &&
+              sizeof(SoftBody) >= offsetof(SoftBody, deltaPosition) + 128);
+
+/// One side's displacements and rotations since the step began, turned into the lanes' columns:
+/// `moved` the displacement, `turn[j]` the entry j of the rotation in glm's column order.
+TUMBLE_WIDE_INLINE void gatherMotion(const std::array<std::uint32_t, kLanes>& index,
+                                     std::span<const SoftBody> bodies, Wide3& moved,
+                                     Wide (&turn)[9])
+{
+    Wide first[8];
+    Wide second[8];
+    for (int lane = 0; lane < kLanes; ++lane) {
+        const auto* row = reinterpret_cast<const char*>(&bodies[index[lane]].deltaPosition);
+        std::memcpy(&first[lane], row, sizeof(Wide));
+        std::memcpy(&second[lane], row + sizeof(Wide), sizeof(Wide));
+    }
+    transposeEight(first);
+    transposeEight(second);
+    moved = {first[0], first[1], first[2]};
+    turn[0] = first[7];
+    for (int j = 1; j < 9; ++j) {
+        turn[j] = second[j - 1];
+    }
+}
+
+/// glm's row vector times matrix, n R: entry c is (R[c][0] n.x + R[c][1] n.y) + R[c][2] n.z.
+TUMBLE_WIDE_INLINE Wide3 timesRotation(const Wide3& n, const Wide (&turn)[9])
+{
+    return {turn[0] * n.x + turn[1] * n.y + turn[2] * n.z,
+            turn[3] * n.x + turn[4] * n.y + turn[5] * n.z,
+            turn[6] * n.x + turn[7] * n.y + turn[8] * n.z};
+}
+
+/// motionOf with each body's rows loaded whole and turned into the lanes' columns: the same
+/// operations on each lane.
+TUMBLE_WIDE_INLINE LaneMotion motionOf(const LaneBlock& block, std::span<const SoftBody> bodies)
+{
+    Wide3 movedA, movedB;
+    Wide turnA[9], turnB[9];
+    gatherMotion(block.bodyA, bodies, movedA, turnA);
+    gatherMotion(block.bodyB, bodies, movedB, turnB);
+    return {dot(block.normal, minus(movedB, movedA)), timesRotation(block.normal, turnA),
+            timesRotation(block.normal, turnB)};
+}
+#else
 TUMBLE_WIDE_INLINE LaneMotion motionOf(const LaneBlock& block, std::span<const SoftBody> bodies)
 {
     LaneMotion motion;
@@ -27,6 +75,7 @@ TUMBLE_WIDE_INLINE LaneMotion motionOf(const LaneBlock& block, std::span<const S
     }
     return motion;
 }
+#endif
 
 /// What solveNormal reads of the pass's settings, as lanes.
 struct LaneSettings {
