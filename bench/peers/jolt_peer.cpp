@@ -160,7 +160,7 @@ std::string describe(const JoltWorld& jw, bool sleep) {
         << " m, warm starting on; BoxShape convex radius 0, static BoxShape ground, discrete "
         << "motion quality, default damping 0.05/s linear and angular, single precision; "
         << "friction geometric mean between bodies, body's own against the ground; restitution "
-        << "max (ground 0); ";
+        << "max (ground 0), only above " << settings.mMinVelocityForRestitution << " m/s; ";
     if (sleep) {
         out << "sleeping on: below " << settings.mPointVelocitySleepThreshold << " m/s for "
             << settings.mTimeBeforeSleep << " s";
