@@ -15,7 +15,7 @@ cmake -S . -B build-o2 "${common[@]}" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLA
 cmake --build build-o0 --target tumble_cli
 cmake --build build-o2 --target tumble_cli
 
-# pile_100.toml (benchmark S5) steps for about two minutes over its 10 s with -O2 and far longer
+# pile_100.toml (benchmark S5) steps for about a minute over its 10 s with -O2 and far longer
 # with -O0; its first 0.5 s bring the lower layers down onto each other, so the comparison runs
 # those (issue 16).
 declare -A shortened=([scenarios/pile_100.toml]=0.5)

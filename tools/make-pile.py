@@ -30,13 +30,16 @@ HEADER = """\
 # Every brick starts 0.3 m above the one below it (the lowest layer 0.3 m above the ground) and
 # tilted by up to 0.03 rad about a random horizontal axis, so the layers fall onto each other,
 # bounce (e = 0.6) and settle into a pile; the end brick of each odd layer overhangs its support
-# and tips off. Written by tools/make-pile.py (seed {seed}); edit that and run it again rather than
+# and tips off. Contacts approaching slower than 1 m/s do not bounce: Jolt's and Box3D's default,
+# which `tumble bench --peers` gives every engine (docs/benchmark.md, "S5 and the restitution
+# threshold"). Written by tools/make-pile.py (seed {seed}); edit that and run it again rather than
 # editing this file.
 
 [world]
 dt = 0.004166666666666667 # 1/240 s
 duration = 10.0
 sleep = true
+restitution_threshold = 1.0 # m/s
 
 [ground]
 height = 0.0

@@ -160,6 +160,7 @@ bench::PeerScene peerScene(const scenario::Scenario& loaded)
     scene.dt = loaded.dt;
     scene.steps = stepCount(loaded);
     scene.sleep = loaded.settings.allowSleep;
+    scene.restitutionThreshold = loaded.settings.restitutionThreshold;
     return scene;
 }
 

@@ -74,6 +74,7 @@ b3WorldDef worldDef(const PeerScene& scene) {
     def.gravity = vec(scene.gravity);
     def.enableSleep = scene.sleep;
     def.frictionCallback = &combineFriction;
+    def.restitutionThreshold = float(scene.restitutionThreshold);
     // One worker and no task callbacks: Box3D runs its tasks inline on the calling thread and
     // starts no scheduler.
     def.workerCount = 1;

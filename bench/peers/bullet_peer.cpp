@@ -61,6 +61,8 @@ btBoxShape* boxShape(BulletWorld& bw, const double size[3]) {
 
 void build(BulletWorld& bw, const PeerScene& scene) {
     bw.world->setGravity(vec(scene.gravity));
+    bw.world->getSolverInfo().m_restitutionVelocityThreshold =
+        btScalar(scene.restitutionThreshold);
 
     // Bullet combines materials by multiplying friction and restitution, so a ground of 1 and 1
     // leaves each body's own values in force against the ground.

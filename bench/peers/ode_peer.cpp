@@ -13,8 +13,6 @@ namespace tumble::bench::detail {
 namespace {
 
 constexpr int kMaxContactsPerPair = 4;
-// Below this approach speed ODE does not bounce; it keeps resting contacts from chattering.
-constexpr dReal kBounceVelocity = 0.1;
 // ODE's documented remedy for resting-contact jitter, which would otherwise keep bodies awake.
 constexpr dReal kSurfaceLayer = 0.001;
 
@@ -40,6 +38,8 @@ struct OdeWorld {
     dJointGroupID contacts = dJointGroupCreate(0);
     std::vector<dBodyID> bodies;
     std::vector<Material> materials; // indexed like bodies; each body's data points at its entry
+    // Below this approach speed a contact does not bounce (bounce_vel): the scene's threshold.
+    dReal bounceVelocity = 0.1;
 
     OdeWorld() = default;
     OdeWorld(const OdeWorld&) = delete;
@@ -57,7 +57,7 @@ bool awake(dBodyID body) {
 
 // Between two bodies: geometric-mean friction and the larger restitution, as Box2D does; against
 // the ground (no body) the body's own values apply.
-dSurfaceParameters surface(dBodyID b1, dBodyID b2) {
+dSurfaceParameters surface(dBodyID b1, dBodyID b2, dReal bounceVelocity) {
     const Material* m1 = b1 ? static_cast<const Material*>(dBodyGetData(b1)) : nullptr;
     const Material* m2 = b2 ? static_cast<const Material*>(dBodyGetData(b2)) : nullptr;
     Material m{};
@@ -71,7 +71,7 @@ dSurfaceParameters surface(dBodyID b1, dBodyID b2) {
     s.mode = dContactBounce | dContactApprox1;
     s.mu = m.friction;
     s.bounce = m.restitution;
-    s.bounce_vel = kBounceVelocity;
+    s.bounce_vel = bounceVelocity;
     return s;
 }
 
@@ -89,7 +89,7 @@ void nearCallback(void* data, dGeomID g1, dGeomID g2) {
     if (count == 0) {
         return;
     }
-    const dSurfaceParameters params = surface(b1, b2);
+    const dSurfaceParameters params = surface(b1, b2, ow.bounceVelocity);
     for (int i = 0; i < count; ++i) {
         contact[i].surface = params;
         const dJointID joint = dJointCreateContact(ow.world, ow.contacts, &contact[i]);
@@ -102,6 +102,7 @@ void build(OdeWorld& ow, const PeerScene& scene) {
     dWorldSetContactSurfaceLayer(ow.world, kSurfaceLayer);
     // Bodies copy the world's auto-disable settings when created, so this must come first.
     dWorldSetAutoDisableFlag(ow.world, scene.sleep ? 1 : 0);
+    ow.bounceVelocity = scene.restitutionThreshold;
 
     dCreatePlane(ow.space, 0, 1, 0, scene.groundHeight);
 
@@ -136,7 +137,7 @@ std::string describe(const OdeWorld& ow) {
         << (sizeof(dReal) == sizeof(double) ? "double" : "single")
         << " precision; dHashSpace, dCreatePlane ground, dCreateBox; up to " << kMaxContactsPerPair
         << " contacts per pair, dContactBounce (bounce = restitution, "
-        << "bounce_vel " << kBounceVelocity
+        << "bounce_vel " << ow.bounceVelocity
         << " m/s) + dContactApprox1 (Coulomb pyramid, mu = friction); body-body: max restitution, "
         << "sqrt(mu1 mu2); pairs with no awake body skipped; ";
     if (dWorldGetAutoDisableFlag(ow.world) != 0) {

@@ -32,6 +32,10 @@ struct PeerScene {
     /// Whether bodies may sleep (deactivate) at the engine's own thresholds; a scene that compares
     /// with sleeping off (a stack, Jolt's pyramid) turns it off in every engine.
     bool sleep = true;
+    /// Approach speed (m/s) at or below which a contact does not bounce, whatever its
+    /// restitution: every engine is given the scene's (tumble's `world.restitution_threshold`),
+    /// so that they bounce alike; MuJoCo's spring-damper contacts have no such threshold.
+    double restitutionThreshold = 1.0;
 };
 
 struct PeerResult {

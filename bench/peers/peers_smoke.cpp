@@ -61,6 +61,46 @@ PeerScene grid(int columns, int rows) {
     return scene;
 }
 
+// A unit cube of e = 0.9 dropped from 4 cm: it meets the ground at sqrt(2 g h) = 0.89 m/s at
+// t = 0.090 s and, if it bounces, rises e^2 h = 32 mm by t = 0.172 s. 41 steps end at 0.171 s.
+PeerScene lowDrop(double restitutionThreshold) {
+    PeerScene scene = emptyScene(41);
+    scene.bodies.push_back(box(1, 1, 1, 1, 0, 0.54, 0));
+    scene.bodies.back().restitution = 0.9;
+    scene.restitutionThreshold = restitutionThreshold;
+    return scene;
+}
+
+// Whether the engine is given the scene's restitution threshold: its settings line names it, and
+// the cube bounces under a threshold of 0.1 m/s and not under 1 m/s, so it ends at least 16 mm
+// higher under the first. Bullet's plane gives one new contact point a step, so a slow flat
+// landing rocks from corner to corner (the cube rose 12 mm under 0.1 m/s and 30 mm under 1 m/s):
+// only its settings line is checked. MuJoCo's spring-damper contacts have no threshold.
+int thresholdFailures(const std::string& name) {
+    if (name.rfind("MuJoCo", 0) == 0) {
+        std::printf("  restitution threshold: none in this engine\n");
+        return 0;
+    }
+    const PeerResult low = tumble::bench::runPeer(name, lowDrop(0.1));
+    const PeerResult high = tumble::bench::runPeer(name, lowDrop(1.0));
+    const double bounced = low.finalPositions.at(0)[1];
+    const double held = high.finalPositions.at(0)[1];
+    std::printf("  restitution threshold: a cube meeting the ground at 0.89 m/s ends at y %.4f "
+                "under 0.1 m/s, %.4f under 1 m/s\n",
+                bounced, held);
+    int failures = 0;
+    if (low.settings.find("0.1 m/s") == std::string::npos ||
+        high.settings.find(" 1 m/s") == std::string::npos) {
+        std::printf("  BAD: the settings line does not name the scene's threshold\n");
+        ++failures;
+    }
+    if (name.rfind("Bullet", 0) != 0 && !(bounced - held >= 0.016)) {
+        std::printf("  BAD: the threshold does not decide the bounce\n");
+        ++failures;
+    }
+    return failures;
+}
+
 // Counts bodies whose final position is non-finite or sunk below the ground, printing the first.
 int badBodies(const PeerScene& scene, const PeerResult& result) {
     int bad = 0;
@@ -115,6 +155,7 @@ int main() {
             std::printf("  single box final y %.4f (upright on its 2 x 2 face: 3)\n",
                         one.finalPositions.at(0)[1]);
             failures += badBodies(single, one);
+            failures += thresholdFailures(name);
 
             const PeerScene* scene = &many;
             PeerResult result;

@@ -16,7 +16,7 @@ namespace tumble::robustness {
 namespace {
 
 /// Overrides for a scenario too long to run whole here, as in the runner test (runner_test.cpp):
-/// pile_100.toml (benchmark S5) steps for about two minutes over its 10 s, so its first 0.5 s run,
+/// pile_100.toml (benchmark S5) steps for about a minute over its 10 s, so its first 0.5 s run,
 /// in which the lower layers land on each other.
 std::vector<std::string> shortened(const std::filesystem::path& file)
 {

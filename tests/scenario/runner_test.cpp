@@ -37,7 +37,7 @@ Real totalEnergy(const Runner& runner)
 }
 
 /// Simulated time of a scenario whose whole duration is too long for this test: pile_100.toml
-/// (benchmark S5) steps for about two minutes over its 10 s in an optimised build; its first
+/// (benchmark S5) steps for about a minute over its 10 s in an optimised build; its first
 /// 0.5 s bring the lower layers down onto each other and cost seconds, also under the sanitizers
 /// (issue 16). Its whole run is
 /// ContactScenarios.ThePileOfOneHundredSettlesOnTheGroundAndCreatesNoEnergy.
