@@ -10,6 +10,7 @@
 #include "dynamics/solver_point.hpp"
 #include "step/island_contacts.hpp"
 #include "step/soft_contact_order.hpp"
+#include "step/soft_buffers.hpp"
 #include "step/soft_manifolds.hpp"
 #include "step/soft_warm_start.hpp"
 #include "parallel_for.hpp"
@@ -21,34 +22,6 @@
 namespace tumble {
 
 namespace {
-
-/// The vectors of an island's soft step, kept by each thread from step to step.
-struct SoftBuffers {
-    /// The island's contacts in the narrow phase's order, owner after owner.
-    std::vector<IslandContact> contacts;
-    std::vector<Vec3> centres;
-    /// The manifolds of the overflow group from its first, or of every contact of an island
-    /// not in lanes.
-    std::vector<SoftManifold> manifolds;
-    std::vector<SoftContactResult> results;
-    SoftContactOrder order;
-    SoftLanes lanes;
-    /// Whether this step's colours are packed in `lanes`.
-    bool inLanes = false;
-    /// What each contact's owner kept of it, in the contacts' order.
-    std::vector<KeptImpulses> kept;
-    std::vector<SoftBody> bodies;
-    /// Each body's mass, inertia and orientation at the step's start, and that orientation's
-    /// rotation transposed, R0^T: what the sub-steps read of the body (the world's copy stays
-    /// at the step's start until finish).
-    std::vector<InertialFrame> frames;
-    std::vector<Mat3> startRotationsT;
-    std::vector<Real> energies;
-    std::vector<Real> kineticStart;
-    std::vector<Real> bodyWork;
-    std::vector<Real> kinetic;
-    std::vector<SolverBody> inverseMasses;
-};
 
 SoftBuffers& threadBuffers()
 {
