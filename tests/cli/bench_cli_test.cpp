@@ -141,6 +141,28 @@ TEST(CliBench, SetOverridesEveryScenarioTimed)
     }
 }
 
+#ifdef TUMBLE_TEST_PEERS
+TEST(CliBench, EveryPeerIsGivenTheScenesRestitutionThreshold)
+{
+    // the engines bounce alike only if each is given the file's threshold (S5 says 1 m/s);
+    // each settings line names the value in force, MuJoCo's spring-damper contacts have none
+    const Result result =
+        runTumble({"bench", "--scenes", "stack20", "--duration", "0.05", "--threads", "1",
+                   "--throws", "0", "--peers", "--set", "world.restitution_threshold=0.3"});
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::istringstream lines(result.output);
+    int checked = 0;
+    for (std::string line; std::getline(lines, line);) {
+        if (!line.starts_with("settings of ") || line.starts_with("settings of MuJoCo")) {
+            continue;
+        }
+        EXPECT_NE(line.find(" 0.3 m/s"), std::string::npos) << line;
+        ++checked;
+    }
+    EXPECT_GT(checked, 0) << result.output;
+}
+#endif
+
 TEST(CliBench, AnUnknownKeyInSetIsNamedInAOneLineError)
 {
     const Result result = runTumble({"bench", "--scenes", "stack20", "--duration", "0.05",
