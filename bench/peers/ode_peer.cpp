@@ -38,8 +38,9 @@ struct OdeWorld {
     dJointGroupID contacts = dJointGroupCreate(0);
     std::vector<dBodyID> bodies;
     std::vector<Material> materials; // indexed like bodies; each body's data points at its entry
-    // Below this approach speed a contact does not bounce (bounce_vel): the scene's threshold.
-    dReal bounceVelocity = 0.1;
+    // Below this approach speed a contact does not bounce (bounce_vel): the scene's threshold,
+    // set by build.
+    dReal bounceVelocity = 0;
 
     OdeWorld() = default;
     OdeWorld(const OdeWorld&) = delete;
