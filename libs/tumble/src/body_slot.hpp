@@ -4,6 +4,7 @@
 
 #include "collision/pair_geometry_cache.hpp"
 #include "step/kept_constraints.hpp"
+#include "step/soft_kept_island.hpp"
 #include "tumble/body.hpp"
 #include "tumble/contact.hpp"
 
@@ -71,6 +72,8 @@ struct BodySlot {
     PairGeometryCache pairGeometry;
     /// The constraints of the island this body was the lowest of in the last step (11.6a).
     KeptConstraints kept;
+    /// The soft step's manifolds of the island this body was the lowest of (12.5b).
+    SoftKeptIsland softKept;
 };
 
 } // namespace tumble

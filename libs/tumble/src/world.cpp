@@ -79,6 +79,7 @@ World::~World() = default;
 
 void World::setGravity(const Vec3& gravity)
 {
+    ++m_edits;
     for (BodySlot& slot : m_slots) {
         // The potential energy is measured in the gravity field: a new field changes it.
         slot.body.ledger.added += slot.body.potentialEnergy(gravity) -
@@ -90,6 +91,7 @@ void World::setGravity(const Vec3& gravity)
 
 void World::setGround(const std::optional<Plane>& ground)
 {
+    ++m_edits;
     m_ground = ground;
     for (BodySlot& slot : m_slots) {
         wake(slot.body);
@@ -98,6 +100,7 @@ void World::setGround(const std::optional<Plane>& ground)
 
 void World::setGroundMaterial(const std::optional<Material>& material)
 {
+    ++m_edits;
     m_groundMaterial = material;
     for (BodySlot& slot : m_slots) {
         wake(slot.body);
@@ -107,6 +110,7 @@ void World::setGroundMaterial(const std::optional<Material>& material)
 int World::addPlane(const StaticPlane& plane)
 {
     TUMBLE_ASSERT(isFinite(plane.point) && std::abs(glm::length(plane.normal) - 1.0) < 1e-9);
+    ++m_edits;
     m_planes.push_back(plane);
     for (BodySlot& slot : m_slots) {
         wake(slot.body);
@@ -125,6 +129,7 @@ BodyId World::createBody(const BodyDef& def)
         index = static_cast<std::uint32_t>(m_slots.size());
         m_slots.emplace_back();
     }
+    ++m_edits;
     BodySlot& slot = m_slots[index];
     if (index + 1 > m_batchEvents.size() * kBatchSize) {
         m_batchEvents.emplace_back();
@@ -152,6 +157,8 @@ void World::destroyBody(BodyId id)
     BodySlot& slot = m_slots[id.index];
     slot.alive = false;
     slot.kept.release();
+    slot.softKept.release();
+    ++m_edits;
     ++slot.generation;
     m_freeSlots.push_back(id.index);
 }
@@ -188,6 +195,7 @@ std::vector<BodyId> World::bodyIds() const
 template <typename Change>
 void World::editBody(BodyId id, Change change)
 {
+    ++m_edits;
     Body& body = mutableBody(id);
     const Real energyBefore = tumble::energyOf(body, m_settings.gravity);
     change(body);
@@ -256,7 +264,8 @@ int World::threadCount() const
 
 StepContext World::stepContext() const
 {
-    return StepContext{m_settings, m_ground, m_time, m_planes, m_groundMaterial, threadCount()};
+    return StepContext{m_settings,       m_ground,      m_time, m_planes,
+                       m_groundMaterial, threadCount(), m_edits};
 }
 
 void World::step(Real dt)
@@ -312,6 +321,7 @@ void World::advanceBatch(std::size_t batch, Real dt)
         slot.contactCache.clear();
         slot.softContacts.clear();
         slot.kept.release();
+        slot.softKept.release();
         slot.body.ledger.impactWorkLastStep = 0.0;
         const BodyId id{static_cast<std::uint32_t>(index), slot.generation};
         if (m_settings.response == ContactResponse::Average) {

@@ -73,6 +73,9 @@ void World::findPairs(detail::StepScratch& scratch, Real dt)
     // narrow phase's first test: boxes that cannot touch within the step link nothing, and a
     // body near another but apart keeps the exact path (10.4)
     const std::span<const ProxyPair> pairs = scratch.broadPhase.pairs();
+    // (12.5b): a kept soft island that stayed put keeps its pairs' answers
+    markKeptSoftIslands(scratch);
+    scratch.pairFromKept.assign(pairs.size(), 0);
     scratch.pairTouches.assign(pairs.size(), 0);
     const bool carry = m_settings.solver == ContactSolver::Soft;
     scratch.pairManifolds.resize(carry ? pairs.size() : 0);
@@ -133,9 +136,13 @@ void World::findPairs(detail::StepScratch& scratch, Real dt)
             scratch.linkPairs.push_back(static_cast<std::uint32_t>(k));
         }
     }
-    // (9.11): kept geometry nobody asked for since the last broad phase is of a pair gone
-    parallelFor(m_slots.size(), slotThreads,
-                [&](std::size_t index) { m_slots[index].pairGeometry.forgetUnasked(); });
+    // (9.11): kept geometry nobody asked for since the last broad phase is of a pair gone,
+    // unless its owner's pairs were answered by its kept island (12.5b)
+    parallelFor(m_slots.size(), slotThreads, [&](std::size_t index) {
+        if (scratch.keptLeader[index] == detail::kNotKept) {
+            m_slots[index].pairGeometry.forgetUnasked();
+        }
+    });
 }
 
 void World::testBroadPair(detail::StepScratch& scratch, std::size_t k, Real dt)
@@ -151,6 +158,17 @@ void World::testBroadPair(detail::StepScratch& scratch, std::size_t k, Real dt)
         return scratch.reach.empty() ? reachOver(m_slots[slot].body, m_settings.gravity, dt)
                                      : scratch.reach[slot];
     };
+    if (const std::optional<bool> kept = keptSoftTouch(scratch, lower, upper)) {
+        // (12.5b): its island's step reads no points of it, unless a body joins the island
+        // (findKeptPairPoints)
+        scratch.pairFromKept[k] = 1;
+        scratch.pairTouches[k] = *kept ? 1 : 0;
+        if (!scratch.pairManifolds.empty()) {
+            scratch.pairManifolds[k].pointCount = 0;
+            scratch.pairHasPoints[k] = 0;
+        }
+        return;
+    }
     const Real reachLower = reachOf(lower);
     const Real reachUpper = reachOf(upper);
     const Real tolerance = m_settings.contactTolerance;

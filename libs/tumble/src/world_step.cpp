@@ -135,6 +135,9 @@ void World::addIslandPairs(detail::StepScratch& scratch, std::span<const std::ui
         island.pairManifolds.push_back(&scratch.pairManifolds[broadPair]);
         island.pairHasPoints.push_back(scratch.pairHasPoints[broadPair]);
     }
+    if (!scratch.pairManifolds.empty()) {
+        findKeptPairPoints(scratch, links, island, dt);
+    }
 }
 
 void World::advanceCoupledIslands(detail::StepScratch& scratch, Real dt)

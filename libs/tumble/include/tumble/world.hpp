@@ -127,6 +127,17 @@ private:
     void findPairs(detail::StepScratch& scratch, Real dt);
     /// The touch test (10.4) of the broad phase's pair k, answered for a resting pair (10.4b).
     void testBroadPair(detail::StepScratch& scratch, std::size_t k, Real dt);
+    /// (12.5b): marks the bodies of the kept soft islands that stayed put (keptLeader).
+    void markKeptSoftIslands(detail::StepScratch& scratch) const;
+    /// (12.5b): the touch test's answer for a pair within one of them (or between one of
+    /// their bodies and a static body), as its island's pairs give it; none for another pair.
+    [[nodiscard]] std::optional<bool> keptSoftTouch(const detail::StepScratch& scratch,
+                                                    std::uint32_t lower,
+                                                    std::uint32_t upper) const;
+    /// Finds the points of an island's pairs answered by keptSoftTouch when the island is not
+    /// the one kept (a body joined it): its step builds its manifolds from them.
+    void findKeptPairPoints(detail::StepScratch& scratch, std::span<const std::uint32_t> links,
+                            CoupledIsland& island, Real dt);
     void buildStepIslands(detail::StepScratch& scratch, Real dt);
     /// The island's pairs from its links, and in a soft world their points.
     void addIslandPairs(detail::StepScratch& scratch, std::span<const std::uint32_t> links,
@@ -143,6 +154,8 @@ private:
     std::vector<BodySlot> m_slots;
     std::vector<std::uint32_t> m_freeSlots;
     Real m_time = 0.0;
+    /// Edits of bodies and static geometry so far: a step keeps nothing built before one.
+    std::uint64_t m_edits = 0;
     std::vector<CollisionEvent> m_collisions;
     std::vector<RestEvent> m_restEvents;
     std::vector<ContactRecord> m_contactRecords;

@@ -232,4 +232,22 @@ SoftContactResult softResultOf(const SoftManifold& m)
     return result;
 }
 
+void restartSoftManifold(SoftManifold& manifold, std::span<const SoftBody> bodies,
+                         Real staticFriction, Real kineticFriction)
+{
+    const SoftBody& a = bodies[manifold.bodyA];
+    const SoftBody& b = bodies[manifold.bodyB];
+    for (int k = 0; k < manifold.pointCount; ++k) {
+        SoftPoint& p = manifold.points[k];
+        p.relativeVelocity =
+            glm::dot(manifold.normal, relativeVelocityAt(a, b, p.anchorA, p.anchorB));
+        p.maxNormalImpulse = 0.0;
+        p.normalWork = 0.0;
+    }
+    manifold.frictionWork = 0.0;
+    manifold.friction =
+        frictionAtCentre(relativeVelocityAt(a, b, manifold.centreA, manifold.centreB),
+                         manifold.normal, staticFriction, kineticFriction);
+}
+
 } // namespace tumble

@@ -2,6 +2,7 @@
 // a relax pass without bias and restitution after the sub-steps (docs/physics/12-soft-step.md).
 #pragma once
 
+#include "dynamics/solver_point.hpp"
 #include "tumble/math.hpp"
 
 #include <array>
@@ -110,6 +111,29 @@ struct SoftManifold {
     Real frictionWork = 0.0;
     std::array<SoftPoint, 4> points{};
 };
+
+/// The velocity of body b's point at `anchorB` relative to body a's at `anchorA` (12.3).
+inline Vec3 relativeVelocityAt(const SoftBody& a, const SoftBody& b, const Vec3& anchorA,
+                               const Vec3& anchorB)
+{
+    return b.linearVelocity + glm::cross(b.angularVelocity, anchorB) - a.linearVelocity -
+           glm::cross(a.angularVelocity, anchorA);
+}
+
+/// (6.2) at the manifold's centre: the static coefficient while the faces do not slide, the
+/// kinetic one when they do; `centreVelocity` is relativeVelocityAt the centre.
+inline Real frictionAtCentre(const Vec3& centreVelocity, const Vec3& normal, Real staticFriction,
+                             Real kineticFriction)
+{
+    const Vec3 sliding = centreVelocity - glm::dot(normal, centreVelocity) * normal;
+    return lengthSquared(sliding) < kStickingSpeedSquared ? staticFriction : kineticFriction;
+}
+
+/// A manifold kept from the last step started again (12.5b): each point's approach speed and
+/// the friction coefficient from the velocities now, the step's work and largest impulses
+/// zero; its rows and impulses stay as they are.
+void restartSoftManifold(SoftManifold& manifold, std::span<const SoftBody> bodies,
+                         Real staticFriction, Real kineticFriction);
 
 /// Fills in a manifold's centre, the mean of its points' anchors on each side (12.5).
 void centreSoftManifold(SoftManifold& manifold);

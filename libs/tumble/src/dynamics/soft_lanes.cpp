@@ -143,6 +143,49 @@ SoftLanes::SoftLanes() : m_storage(std::make_unique<Storage>()) {}
 
 SoftLanes::~SoftLanes() = default;
 
+SoftLanes::SoftLanes(const SoftLanes& other)
+    : m_storage(std::make_unique<Storage>(*other.m_storage))
+{
+}
+
+SoftLanes& SoftLanes::operator=(const SoftLanes& other)
+{
+    if (this != &other) {
+        *m_storage = *other.m_storage;
+    }
+    return *this;
+}
+
+void SoftLanes::restart(std::span<const SoftBody> bodies,
+                        std::span<const std::pair<Real, Real>> frictions, int threads)
+{
+    Storage& storage = *m_storage;
+    // each block writes only itself; a lane's arithmetic is restartSoftManifold's
+    parallelFor(storage.blocks.size(), threads, [&](std::size_t index) {
+        LaneBlock& block = storage.blocks[index];
+        for (std::uint32_t lane = 0; lane < block.lanes; ++lane) {
+            const auto l = static_cast<int>(lane);
+            const SoftBody& a = bodies[block.bodyA[lane]];
+            const SoftBody& b = bodies[block.bodyB[lane]];
+            const Vec3 normal = laneOf(block.normal, l);
+            for (LanePoint& p : block.points) {
+                if (p.active[l] == 0) {
+                    continue;
+                }
+                p.relativeVelocity[l] = glm::dot(
+                    normal, relativeVelocityAt(a, b, laneOf(p.anchorA, l), laneOf(p.anchorB, l)));
+                p.maxNormalImpulse[l] = 0.0;
+                p.normalWork[l] = 0.0;
+            }
+            block.frictionWork[l] = 0.0;
+            const auto [staticFriction, kineticFriction] = frictions[block.manifold[lane]];
+            block.friction[l] = frictionAtCentre(
+                relativeVelocityAt(a, b, laneOf(block.centreA, l), laneOf(block.centreB, l)),
+                normal, staticFriction, kineticFriction);
+        }
+    });
+}
+
 void SoftLanes::pack(std::span<const SoftManifold> manifolds, const SoftColours& colours,
                      std::span<const SoftBody> bodies, int threads)
 {

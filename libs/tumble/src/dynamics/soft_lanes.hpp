@@ -10,6 +10,7 @@
 #include <functional>
 #include <memory>
 #include <span>
+#include <utility>
 
 namespace tumble {
 
@@ -19,8 +20,9 @@ class SoftLanes {
 public:
     SoftLanes();
     ~SoftLanes();
-    SoftLanes(const SoftLanes&) = delete;
-    SoftLanes& operator=(const SoftLanes&) = delete;
+    /// A copy holds its own blocks (a World copied keeps its islands' kept lanes, (12.5b)).
+    SoftLanes(const SoftLanes& other);
+    SoftLanes& operator=(const SoftLanes& other);
 
     /// The manifold of a contact, by its index in colour order.
     using ManifoldSource = std::function<SoftManifold(std::size_t)>;
@@ -36,6 +38,13 @@ public:
     /// The same from manifolds kept.
     void pack(std::span<const SoftManifold> manifolds, const SoftColours& colours,
               std::span<const SoftBody> bodies, int threads);
+
+    /// restartSoftManifold on every manifold packed, from the velocities of `bodies` and each
+    /// manifold's static and kinetic friction coefficients in `frictions` (by its index in
+    /// colour order): the lanes kept from the last step start this one (12.5b). The blocks are
+    /// spread over `threads`.
+    void restart(std::span<const SoftBody> bodies,
+                 std::span<const std::pair<Real, Real>> frictions, int threads);
 
     /// warmStartSoft over the colours' manifolds, colour after colour, a large colour shared
     /// over `threads`.

@@ -1,6 +1,7 @@
 #pragma once
 
-// What an island's soft step keeps from step to step, one set per thread (soft_step.cpp).
+// What an island's soft step works in: a thread's set while it builds an island's manifolds,
+// then the island's own while they are kept (soft_step.cpp, (12.5b)).
 
 #include "dynamics/energy_booking.hpp"
 #include "dynamics/soft_contact_solver.hpp"
@@ -10,11 +11,12 @@
 #include "step/soft_contact_order.hpp"
 #include "step/soft_warm_start.hpp"
 
+#include <utility>
 #include <vector>
 
 namespace tumble {
 
-/// The vectors of an island's soft step, kept by each thread from step to step.
+/// The vectors of an island's soft step.
 struct SoftBuffers {
     /// The island's contacts in the narrow phase's order, owner after owner.
     std::vector<IslandContact> contacts;
@@ -24,6 +26,8 @@ struct SoftBuffers {
     std::vector<SoftManifold> manifolds;
     std::vector<SoftContactResult> results;
     SoftContactOrder order;
+    /// Each manifold's static and kinetic friction coefficients, in colour order.
+    std::vector<std::pair<Real, Real>> frictions;
     SoftLanes lanes;
     /// Whether this step's colours are packed in `lanes`.
     bool inLanes = false;
@@ -35,6 +39,9 @@ struct SoftBuffers {
     /// at the step's start until finish).
     std::vector<InertialFrame> frames;
     std::vector<Mat3> startRotationsT;
+    std::vector<Quat> startOrientations;
+    /// The contact points of the island's manifolds.
+    std::size_t points = 0;
     std::vector<Real> energies;
     std::vector<Real> kineticStart;
     std::vector<Real> bodyWork;

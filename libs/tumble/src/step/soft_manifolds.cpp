@@ -38,21 +38,15 @@ SoftManifold softManifoldOf(const IslandContact& contact, std::span<const SoftBo
         p.anchorA = anchor(m.bodyA, point.position);
         p.anchorB = anchor(m.bodyB, point.position);
         p.baseSeparation = point.separation - glm::dot(m.normal, p.anchorB - p.anchorA);
-        const Vec3 velocity = b.linearVelocity + glm::cross(b.angularVelocity, p.anchorB) -
-                              a.linearVelocity - glm::cross(a.angularVelocity, p.anchorA);
-        p.relativeVelocity = glm::dot(m.normal, velocity);
+        p.relativeVelocity = glm::dot(m.normal, relativeVelocityAt(a, b, p.anchorA, p.anchorB));
     }
     if (rows) {
         prepareSoftRows(m, bodies);
     } else {
         centreSoftManifold(m);
     }
-    // (6.2) at the centre: the static coefficient while the faces do not slide
-    const Vec3 centreVelocity = b.linearVelocity + glm::cross(b.angularVelocity, m.centreB) -
-                                a.linearVelocity - glm::cross(a.angularVelocity, m.centreA);
-    const Vec3 sliding = centreVelocity - glm::dot(m.normal, centreVelocity) * m.normal;
-    m.friction = lengthSquared(sliding) < kStickingSpeedSquared ? contact.staticFriction
-                                                                         : contact.friction;
+    m.friction = frictionAtCentre(relativeVelocityAt(a, b, m.centreA, m.centreB), m.normal,
+                                  contact.staticFriction, contact.friction);
     return m;
 }
 

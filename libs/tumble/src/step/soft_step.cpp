@@ -9,38 +9,38 @@
 #include "dynamics/soft_lanes.hpp"
 #include "dynamics/solver_point.hpp"
 #include "step/island_contacts.hpp"
-#include "step/soft_contact_order.hpp"
 #include "step/soft_buffers.hpp"
+#include "step/soft_contact_order.hpp"
+#include "step/soft_island_manifolds.hpp"
+#include "step/soft_kept_island.hpp"
 #include "step/soft_manifolds.hpp"
 #include "step/soft_warm_start.hpp"
 #include "parallel_for.hpp"
-#include "prefetch.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <utility>
 
 namespace tumble {
 
 namespace {
 
-SoftBuffers& threadBuffers()
+/// The buffers a thread builds an island's manifolds in; kept by the island afterwards, which
+/// gives back the ones it held (keepSoftIsland).
+std::unique_ptr<SoftBuffers>& threadBuffers()
 {
-    thread_local SoftBuffers buffers;
+    thread_local std::unique_ptr<SoftBuffers> buffers = std::make_unique<SoftBuffers>();
     return buffers;
 }
 
-/// An island of fewer manifolds sweeps them one at a time: most lanes of its colours' blocks
-/// would be empty.
-constexpr std::size_t kLaneManifolds = 32;
-/// How many manifolds ahead of the one being built its contact is asked for (prefetch.hpp).
-constexpr std::size_t kLanesPrefetchedAhead = 8;
-
 class SoftStep {
 public:
+    /// With `kept`, `buffers` hold the island's manifolds of its last step (12.5b).
     SoftStep(const CoupledIsland& island, std::span<BodySlot> slots, const StepContext& context,
-             StepEvents& events, SoftBuffers& buffers)
+             StepEvents& events, SoftBuffers& buffers, bool kept)
         : m_island(island), m_slots(slots), m_context(context), m_settings(context.settings),
-          m_events(events), m_buffers(buffers)
+          m_events(events), m_buffers(buffers), m_kept(kept)
     {
     }
 
@@ -48,11 +48,9 @@ public:
 
 private:
     void prepare(Real dt);
-    /// (12.3) and (12.5): contact k's manifold, started from its owner's kept impulses; its
-    /// rows only with `rows` (SoftLanes builds them as it packs).
-    SoftManifold manifoldOf(std::size_t k, bool rows) const;
-    /// The first contact that is not packed in lanes: the overflow group's, or 0.
-    std::size_t firstUnpacked() const;
+    /// Each body's start of the step; a kept island's bodies start where they moved to since
+    /// its manifolds were built (12.5b).
+    void startBodies();
     void collectResults();
     /// One sub-step; `bookLast` when a sub-step went before it (its work is booked here).
     void substep(Real h, const SoftSolveSettings& solve, bool bookLast);
@@ -69,6 +67,7 @@ private:
     const WorldSettings& m_settings;
     StepEvents& m_events;
     SoftBuffers& m_buffers;
+    bool m_kept;
 };
 
 void SoftStep::run(Real dt)
@@ -104,11 +103,26 @@ void SoftStep::run(Real dt)
 
 void SoftStep::prepare(Real dt)
 {
-    const std::size_t count = m_island.bodies.size();
-    // the exact step's kept constraints do not survive a soft step
+    // the exact step's kept constraints do not survive a soft step, nor does what the island's
+    // other bodies kept of islands they led
     for (const std::uint32_t index : m_island.bodies) {
         m_slots[index].kept.release();
+        if (index != m_island.bodies.front()) {
+            m_slots[index].softKept.release();
+        }
     }
+    startBodies();
+    if (m_kept) {
+        restartSoftManifolds(m_buffers, m_context.threads);
+    } else {
+        buildSoftManifolds(m_island, m_slots, m_context, dt, m_buffers);
+    }
+    m_events.statistics.contactPoints += m_buffers.points;
+}
+
+void SoftStep::startBodies()
+{
+    const std::size_t count = m_island.bodies.size();
     m_buffers.energies.resize(count);
     m_buffers.kineticStart.resize(count);
     m_buffers.bodyWork.assign(count, 0.0);
@@ -118,64 +132,26 @@ void SoftStep::prepare(Real dt)
     m_buffers.centres.resize(count);
     m_buffers.frames.resize(count);
     m_buffers.startRotationsT.resize(count);
-    // each body, each manifold and each kept impulse below writes only its own entry
+    m_buffers.startOrientations.resize(count);
+    // each body writes only its own entries
     parallelFor(count, m_context.threads, [&](std::size_t i) {
-        m_buffers.energies[i] = energyOf(body(i), m_settings.gravity);
-        m_buffers.kineticStart[i] = body(i).kineticEnergy();
-        m_buffers.bodies[i] = softBodyOf(body(i));
-        m_buffers.centres[i] = body(i).position;
-        m_buffers.frames[i] = inertialFrameOf(body(i));
-        m_buffers.startRotationsT[i] = glm::transpose(body(i).rotation());
+        const Body& b = body(i);
+        m_buffers.energies[i] = energyOf(b, m_settings.gravity);
+        m_buffers.kineticStart[i] = b.kineticEnergy();
+        SoftBody& soft = m_buffers.bodies[i];
+        soft = softBodyOf(b);
+        m_buffers.frames[i] = inertialFrameOf(b);
+        if (m_kept) {
+            // (12.5b): the manifolds are anchored at the poses they were built at, so the
+            // motion since then is the start of the step's displacement (12.3)
+            soft.deltaPosition = b.position - m_buffers.centres[i];
+            soft.deltaRotation = glm::mat3_cast(b.orientation) * m_buffers.startRotationsT[i];
+        } else {
+            m_buffers.centres[i] = b.position;
+            m_buffers.startRotationsT[i] = glm::transpose(b.rotation());
+            m_buffers.startOrientations[i] = b.orientation;
+        }
     });
-    // narrow phase once a step: every point the bodies can reach within it (12.1)
-    findIslandContacts(m_island, m_slots, m_context, dt, true, m_buffers.contacts);
-    // (12.5): last step's impulses, matched by the other side and the points' feature keys
-    m_buffers.kept.resize(m_buffers.contacts.size());
-    parallelFor(m_buffers.contacts.size(), m_context.threads, [&](std::size_t k) {
-        prefetchKeptImpulses(m_island, m_slots, m_buffers.contacts, k + kLanesPrefetchedAhead);
-        m_buffers.kept[k] = keptImpulsesOf(m_island, m_slots, m_buffers.contacts[k],
-                                           m_settings.contactTolerance);
-    });
-    orderSoftContacts(m_buffers.contacts, m_island.bodies.size(), m_context.threads,
-                      m_buffers.order);
-    std::size_t points = 0;
-    for (const IslandContact& contact : m_buffers.contacts) {
-        points += static_cast<std::size_t>(contact.manifold.pointCount);
-    }
-    m_events.statistics.contactPoints += points;
-    // (12.9): a large island's colours a block of manifolds at a time, the same bits, each manifold
-    // built where it is packed; the overflow group (or a small island) keeps its manifolds
-    m_buffers.inLanes = m_buffers.contacts.size() >= kLaneManifolds;
-    const std::size_t first = firstUnpacked();
-    m_buffers.manifolds.resize(m_buffers.contacts.size() - first);
-    parallelFor(m_buffers.manifolds.size(), m_context.threads,
-                [&](std::size_t i) { m_buffers.manifolds[i] = manifoldOf(first + i, true); });
-    if (m_buffers.inLanes) {
-        m_buffers.lanes.pack([&](std::size_t k) { return manifoldOf(k, false); },
-                             m_buffers.order.colours, m_buffers.bodies, m_context.threads);
-    }
-}
-
-SoftManifold SoftStep::manifoldOf(std::size_t k, bool rows) const
-{
-    const std::vector<std::uint32_t>& order = m_buffers.order.colourOrder;
-    // the contacts are read in colour order, all over memory: the next block's asked for ahead
-    if (k + kLanesPrefetchedAhead < order.size()) {
-        const std::uint32_t next = order[k + kLanesPrefetchedAhead];
-        prefetchLines(&m_buffers.contacts[next], sizeof(IslandContact));
-        prefetchLines(&m_buffers.kept[next], sizeof(KeptImpulses));
-    }
-    const std::uint32_t contact = order[k];
-    SoftManifold m = softManifoldOf(m_buffers.contacts[contact], m_buffers.bodies,
-                                    m_buffers.centres, m_island.bodies.size(), rows);
-    startFromKept(m_buffers.kept[contact], m);
-    return m;
-}
-
-std::size_t SoftStep::firstUnpacked() const
-{
-    const std::vector<std::uint32_t>& offsets = m_buffers.order.colours.offsets;
-    return m_buffers.inLanes && offsets.size() >= 2 ? offsets[offsets.size() - 2] : 0;
 }
 
 void SoftStep::collectResults()
@@ -184,7 +160,7 @@ void SoftStep::collectResults()
     if (m_buffers.inLanes) {
         m_buffers.lanes.results(m_buffers.results, m_context.threads);
     }
-    const std::size_t first = firstUnpacked();
+    const std::size_t first = firstUnpackedManifold(m_buffers);
     for (std::size_t i = 0; i < m_buffers.manifolds.size(); ++i) {
         m_buffers.results[first + i] = softResultOf(m_buffers.manifolds[i]);
     }
@@ -235,7 +211,8 @@ void SoftStep::finish()
     const std::size_t count = m_island.bodies.size();
     // (12.5): the last sub-step's impulses start the next step's sub-steps
     storeSoftWarmStart(m_island, m_slots, m_buffers.contacts, m_buffers.results,
-                       m_buffers.order.colourPosition, m_context.threads);
+                       m_buffers.order.colourPosition, m_context.threads, m_buffers.centres,
+                       m_buffers.startOrientations);
     IslandWork total;
     for (const SoftContactResult& result : m_buffers.results) {
         for (int k = 0; k < result.pointCount; ++k) {
@@ -253,7 +230,7 @@ void SoftStep::finish()
     parallelFor(count, m_context.threads, [&](std::size_t i) {
         Body& b = body(i);
         const SoftBody& soft = m_buffers.bodies[i];
-        b.position += soft.deltaPosition;
+        b.position = m_buffers.centres[i] + soft.deltaPosition;
         b.orientation = soft.orientation;
         b.linearVelocity = soft.linearVelocity;
         b.angularVelocity = soft.angularVelocity;
@@ -285,7 +262,24 @@ void SoftStep::finish()
 void advanceSoft(const CoupledIsland& island, std::span<BodySlot> slots,
                  const StepContext& context, Real dt, StepEvents& events)
 {
-    SoftStep(island, slots, context, events, threadBuffers()).run(dt);
+    // (12.5b): an island whose bodies stayed put steps on the manifolds it kept; any other
+    // builds them in its thread's buffers, and keeps those for the next step only if its
+    // bodies stayed put over this one (a moving island's buffers stay the thread's, warm in
+    // its caches, for the next island)
+    SoftKeptIsland& kept = slots[island.bodies.front()].softKept;
+    if (softIslandKept(kept, island, slots, context.edits, context.threads)) {
+        SoftStep(island, slots, context, events, *kept.buffers, true).run(dt);
+        ++events.statistics.keptIslands;
+        return;
+    }
+    std::unique_ptr<SoftBuffers>& buffers = threadBuffers();
+    SoftStep(island, slots, context, events, *buffers, false).run(dt);
+    if (std::is_sorted(island.pairs.begin(), island.pairs.end()) &&
+        softBodiesStill(*buffers, island.bodies, slots, context.threads)) {
+        keepSoftIsland(kept, island, context.edits, buffers);
+    } else {
+        kept.release();
+    }
 }
 
 } // namespace tumble

@@ -123,7 +123,8 @@ void startFromKept(const KeptImpulses& kept, SoftManifold& m)
 void storeSoftWarmStart(const CoupledIsland& island, std::span<BodySlot> slots,
                         std::span<const IslandContact> contacts,
                         std::span<const SoftContactResult> results,
-                        std::span<const std::uint32_t> resultOf, int threads)
+                        std::span<const std::uint32_t> resultOf, int threads,
+                        std::span<const Vec3> centres, std::span<const Quat> orientations)
 {
     for (const std::uint32_t slot : island.bodies) {
         slots[slot].softContacts.clear();
@@ -145,7 +146,10 @@ void storeSoftWarmStart(const CoupledIsland& island, std::span<BodySlot> slots,
             const SoftContactResult& result = results[resultOf[index]];
             BodySlot& slot = slots[island.bodies[contact.owner]];
             if (slot.softContacts.empty()) {
-                slot.softContactsPose = Transform{slot.body.position, slot.body.orientation};
+                slot.softContactsPose =
+                    centres.empty()
+                        ? Transform{slot.body.position, slot.body.orientation}
+                        : Transform{centres[contact.owner], orientations[contact.owner]};
             }
             // built where it is kept: a temporary is a cleared copy more
             CachedSoftContact& kept = slot.softContacts.emplace_back();

@@ -5,6 +5,7 @@
 #include "tumble/settings.hpp"
 #include "tumble/shape.hpp"
 
+#include <cstdint>
 #include <optional>
 #include <span>
 
@@ -21,6 +22,9 @@ struct StepContext {
     std::optional<Material> groundMaterial{};
     /// Threads one island's sweeps may spread over (settings.threads resolved, at least 1).
     int threads = 1;
+    /// How many times the world's bodies or static geometry were edited by hand: what was kept
+    /// from a step before an edit is not kept after it (12.5b).
+    std::uint64_t edits = 0;
 };
 
 } // namespace tumble

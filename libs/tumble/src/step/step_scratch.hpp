@@ -18,6 +18,8 @@ namespace tumble::detail {
 /// four a face contact) is large: it takes all the threads inside its step. The broad phase's
 /// touch test takes the threads from as many pairs.
 inline constexpr std::size_t kLargeIslandPairs = 256;
+/// StepScratch::keptLeader of a body in no kept soft island.
+inline constexpr std::uint32_t kNotKept = 0xffffffffu;
 
 struct StepScratch {
     std::vector<BroadPhaseProxy> proxies;
@@ -39,6 +41,10 @@ struct StepScratch {
     /// 1 for a pair whose bodies both rest (static or asleep) at the test: its answer is the
     /// one kept while it rests, and its points are found only if its island wakes (10.4b).
     std::vector<std::uint8_t> pairAtRest;
+    /// Each slot's kept soft island whose bodies all stayed put (its lowest body's slot), or
+    /// kNotKept; and 1 for a pair answered from that island's pairs rather than tested (12.5b).
+    std::vector<std::uint32_t> keptLeader;
+    std::vector<std::uint8_t> pairFromKept;
     /// The broad phase's pairs that may touch, as slot indices, and each one's pair index.
     std::vector<ProxyPair> links;
     std::vector<std::uint32_t> linkPairs;

@@ -1,0 +1,83 @@
+// The broad phase's answers for the pairs of soft islands kept from the last step: a pair
+// within an island whose bodies all stayed put touches as it did when the island's manifolds
+// were built (docs/physics/12-soft-step.md, (12.5b)).
+#include "tumble/world.hpp"
+
+#include "body_slot.hpp"
+#include "parallel_for.hpp"
+#include "step/island_contacts.hpp"
+#include "step/soft_kept_island.hpp"
+#include "step/step_scratch.hpp"
+
+#include <algorithm>
+
+namespace tumble {
+
+void World::markKeptSoftIslands(detail::StepScratch& scratch) const
+{
+    scratch.keptLeader.assign(m_slots.size(), detail::kNotKept);
+    if (m_settings.solver != ContactSolver::Soft) {
+        return;
+    }
+    for (std::uint32_t index = 0; index < m_slots.size(); ++index) {
+        const BodySlot& slot = m_slots[index];
+        const SoftKeptIsland& kept = slot.softKept;
+        if (!slot.alive || slot.body.asleep || !kept.valid || kept.edits != m_edits ||
+            !softBodiesStill(*kept.buffers, kept.bodies, m_slots, threadCount())) {
+            continue;
+        }
+        for (const std::uint32_t body : kept.bodies) {
+            scratch.keptLeader[body] = index;
+        }
+    }
+}
+
+std::optional<bool> World::keptSoftTouch(const detail::StepScratch& scratch,
+                                         std::uint32_t lower, std::uint32_t upper) const
+{
+    if (scratch.keptLeader.empty()) {
+        return std::nullopt;
+    }
+    const std::uint32_t leaderLower = scratch.keptLeader[lower];
+    const std::uint32_t leaderUpper = scratch.keptLeader[upper];
+    // static geometry does not move unless edited, and an edit ends every kept island
+    const bool withinOne = leaderLower != detail::kNotKept &&
+                           (leaderLower == leaderUpper || m_slots[upper].body.isStatic());
+    const bool withStatic =
+        leaderUpper != detail::kNotKept && m_slots[lower].body.isStatic();
+    if (!withinOne && !withStatic) {
+        return std::nullopt;
+    }
+    const std::uint32_t leader = withinOne ? leaderLower : leaderUpper;
+    const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs =
+        m_slots[leader].softKept.pairs;
+    return std::binary_search(pairs.begin(), pairs.end(), std::pair{lower, upper});
+}
+
+void World::findKeptPairPoints(detail::StepScratch& scratch,
+                               std::span<const std::uint32_t> links, CoupledIsland& island,
+                               Real dt)
+{
+    const SoftKeptIsland& kept = m_slots[island.bodies.front()].softKept;
+    if (kept.valid && kept.edits == m_edits && kept.bodies == island.bodies &&
+        kept.pairs == island.pairs) {
+        return;
+    }
+    // the island is not the one kept: its step builds its manifolds, from every pair's points
+    for (std::size_t i = 0; i < links.size(); ++i) {
+        const std::uint32_t broadPair = scratch.linkPairs[links[i]];
+        if (scratch.pairFromKept[broadPair] == 0) {
+            continue;
+        }
+        const auto [lower, upper] = island.pairs[i];
+        mayTouch(m_slots, lower, upper, m_settings.contactTolerance,
+                 reachOver(m_slots[lower].body, m_settings.gravity, dt),
+                 reachOver(m_slots[upper].body, m_settings.gravity, dt), true,
+                 &scratch.pairManifolds[broadPair]);
+        scratch.pairHasPoints[broadPair] =
+            scratch.pairManifolds[broadPair].pointCount > 0 ? 1 : 0;
+        island.pairHasPoints[i] = scratch.pairHasPoints[broadPair];
+    }
+}
+
+} // namespace tumble
