@@ -157,6 +157,8 @@ void World::destroyBody(BodyId id)
     BodySlot& slot = m_slots[id.index];
     slot.alive = false;
     slot.kept.release();
+    // the island it led hands its impulses to its other bodies' caches before it goes
+    storeKeptSoftIsland(slot.softKept, m_slots, threadCount());
     slot.softKept.release();
     ++m_edits;
     ++slot.generation;
@@ -276,6 +278,8 @@ void World::step(Real dt)
     findPairs(scratch, dt);
     // islands: awake dynamic bodies joined by those pairs; static bodies join none (10.4)
     buildStepIslands(scratch, dt);
+    // a soft island whose bodies stayed put keeps its manifolds (step/soft_kept_island.cpp)
+    decideKeptSoftIslands(scratch);
     // a body whose only obstacle is the ground keeps the exact path (step/solitary_step.cpp)
     advanceSolitaryBodies(dt);
     // bodies that may touch each other or other static geometry (step/coupled_step.cpp)

@@ -139,6 +139,9 @@ private:
     void findKeptPairPoints(detail::StepScratch& scratch, std::span<const std::uint32_t> links,
                             CoupledIsland& island, Real dt);
     void buildStepIslands(detail::StepScratch& scratch, Real dt);
+    /// (12.5b): which soft islands step on the manifolds they kept; the impulses of every
+    /// other kept island go to its bodies' caches first.
+    void decideKeptSoftIslands(detail::StepScratch& scratch);
     /// The island's pairs from its links, and in a soft world their points.
     void addIslandPairs(detail::StepScratch& scratch, std::span<const std::uint32_t> links,
                         CoupledIsland& island, Real dt);

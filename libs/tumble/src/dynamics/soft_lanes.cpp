@@ -211,6 +211,11 @@ void SoftLanes::pack(const ManifoldSource& source, const SoftColours& colours,
             storage.anyThreadedColour || size >= kThreadedLaneManifolds;
     }
     const auto staticIndex = static_cast<std::uint32_t>(bodies.size() - 1);
+    // grown at least twofold: islands of every size take turns in one thread's lanes, and a
+    // vector grown to each larger one's size exactly would take fresh pages at every growth
+    if (blockCount > storage.blocks.capacity()) {
+        storage.blocks.reserve(std::max(blockCount, 2 * storage.blocks.capacity()));
+    }
     storage.blocks.resize(blockCount);
     // the first manifold and the lanes of each block, so that the blocks (not the colours, of
     // very unequal sizes) are shared out over the threads, each writing only itself

@@ -31,6 +31,9 @@ struct CoupledIsland {
     /// With pairManifolds, 1 where the pair's manifold has points: the narrow phase places its
     /// contacts from these bytes rather than from the manifolds, a cache line each.
     std::vector<std::uint8_t> pairHasPoints;
+    /// (12.5b) Whether the soft step goes on the manifolds the island's lowest body kept (set
+    /// by the world before the islands advance).
+    bool keepsSoftManifolds = false;
 };
 
 /// Advances the island's bodies by dt together. Writes only the slots of `island.bodies`.

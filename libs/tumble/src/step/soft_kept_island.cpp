@@ -5,6 +5,7 @@
 #include "parallel_for.hpp"
 #include "step/coupled_step.hpp"
 #include "step/soft_buffers.hpp"
+#include "step/soft_warm_start.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -17,7 +18,7 @@ SoftKeptIsland::SoftKeptIsland(SoftKeptIsland&& other) noexcept = default;
 SoftKeptIsland& SoftKeptIsland::operator=(SoftKeptIsland&& other) noexcept = default;
 
 SoftKeptIsland::SoftKeptIsland(const SoftKeptIsland& other)
-    : valid(other.valid), edits(other.edits), bodies(other.bodies), pairs(other.pairs),
+    : valid(other.valid), unstored(other.unstored), edits(other.edits), bodies(other.bodies), pairs(other.pairs),
       buffers(other.buffers ? std::make_unique<SoftBuffers>(*other.buffers) : nullptr)
 {
 }
@@ -71,10 +72,24 @@ bool softBodiesStill(const SoftBuffers& built, std::span<const std::uint32_t> bo
     });
 }
 
+void storeKeptSoftIsland(SoftKeptIsland& kept, std::span<BodySlot> slots, int threads)
+{
+    if (!kept.unstored) {
+        return;
+    }
+    CoupledIsland island;
+    island.bodies = kept.bodies;
+    const SoftBuffers& built = *kept.buffers;
+    storeSoftWarmStart(island, slots, built.contacts, built.results, built.order.colourPosition,
+                       threads, built.centres, built.startOrientations);
+    kept.unstored = false;
+}
+
 void keepSoftIsland(SoftKeptIsland& kept, const CoupledIsland& island, std::uint64_t edits,
                     std::unique_ptr<SoftBuffers>& built)
 {
     kept.valid = true;
+    kept.unstored = false;
     kept.edits = edits;
     kept.bodies = island.bodies;
     kept.pairs = island.pairs;

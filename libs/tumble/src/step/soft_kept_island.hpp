@@ -32,6 +32,9 @@ struct SoftKeptIsland {
     SoftKeptIsland& operator=(SoftKeptIsland&& other) noexcept;
 
     bool valid = false;
+    /// Whether the impulses of the last step are in `buffers` only, not yet in the owners'
+    /// caches (a kept step leaves them there, storeKeptSoftIsland puts them in the caches).
+    bool unstored = false;
     std::uint64_t edits = 0;
     std::vector<std::uint32_t> bodies;
     std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
@@ -53,6 +56,10 @@ bool softIslandKept(const SoftKeptIsland& kept, const CoupledIsland& island,
 /// built for) is within (12.5b) of its pose in `built` (the poses its manifolds were built at).
 bool softBodiesStill(const SoftBuffers& built, std::span<const std::uint32_t> bodies,
                      std::span<const BodySlot> slots, int threads);
+
+/// Puts the impulses `kept` holds unstored into its bodies' caches (storeSoftWarmStart), for
+/// the step that builds their manifolds next; writes only the slots of `kept.bodies`.
+void storeKeptSoftIsland(SoftKeptIsland& kept, std::span<BodySlot> slots, int threads);
 
 /// Keeps the buffers of a step that built its manifolds now (the island's pairs must come
 /// sorted, as the broad phase gives them: they are searched): `built` goes into `kept`, and

@@ -209,10 +209,13 @@ void SoftStep::bookWorkAndGravity(Real h, bool bookWork)
 void SoftStep::finish()
 {
     const std::size_t count = m_island.bodies.size();
-    // (12.5): the last sub-step's impulses start the next step's sub-steps
-    storeSoftWarmStart(m_island, m_slots, m_buffers.contacts, m_buffers.results,
-                       m_buffers.order.colourPosition, m_context.threads, m_buffers.centres,
-                       m_buffers.startOrientations);
+    // (12.5): the last sub-step's impulses start the next step's sub-steps; a kept island's
+    // stay in its lanes, and go to the caches only when its manifolds are built again (12.5b)
+    if (!m_kept) {
+        storeSoftWarmStart(m_island, m_slots, m_buffers.contacts, m_buffers.results,
+                           m_buffers.order.colourPosition, m_context.threads, m_buffers.centres,
+                           m_buffers.startOrientations);
+    }
     IslandWork total;
     for (const SoftContactResult& result : m_buffers.results) {
         for (int k = 0; k < result.pointCount; ++k) {
@@ -267,8 +270,9 @@ void advanceSoft(const CoupledIsland& island, std::span<BodySlot> slots,
     // bodies stayed put over this one (a moving island's buffers stay the thread's, warm in
     // its caches, for the next island)
     SoftKeptIsland& kept = slots[island.bodies.front()].softKept;
-    if (softIslandKept(kept, island, slots, context.edits, context.threads)) {
+    if (island.keepsSoftManifolds) {
         SoftStep(island, slots, context, events, *kept.buffers, true).run(dt);
+        kept.unstored = true;
         ++events.statistics.keptIslands;
         return;
     }

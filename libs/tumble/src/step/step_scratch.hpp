@@ -45,6 +45,8 @@ struct StepScratch {
     /// kNotKept; and 1 for a pair answered from that island's pairs rather than tested (12.5b).
     std::vector<std::uint32_t> keptLeader;
     std::vector<std::uint8_t> pairFromKept;
+    /// 1 for the lowest body of an island that keeps its soft manifolds this step.
+    std::vector<std::uint8_t> leadsKeptIsland;
     /// The broad phase's pairs that may touch, as slot indices, and each one's pair index.
     std::vector<ProxyPair> links;
     std::vector<std::uint32_t> linkPairs;

@@ -1,10 +1,11 @@
-// The broad phase's answers for the pairs of soft islands kept from the last step: a pair
-// within an island whose bodies all stayed put touches as it did when the island's manifolds
-// were built (docs/physics/12-soft-step.md, (12.5b)).
+// Soft islands kept from the last step (docs/physics/12-soft-step.md, (12.5b)): the broad
+// phase's answers for their pairs (a pair within an island whose bodies all stayed put touches
+// as it did when its manifolds were built), and which islands keep their manifolds.
 #include "tumble/world.hpp"
 
 #include "body_slot.hpp"
 #include "parallel_for.hpp"
+#include "step/coupled_step.hpp"
 #include "step/island_contacts.hpp"
 #include "step/soft_kept_island.hpp"
 #include "step/step_scratch.hpp"
@@ -52,6 +53,27 @@ std::optional<bool> World::keptSoftTouch(const detail::StepScratch& scratch,
     const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs =
         m_slots[leader].softKept.pairs;
     return std::binary_search(pairs.begin(), pairs.end(), std::pair{lower, upper});
+}
+
+void World::decideKeptSoftIslands(detail::StepScratch& scratch)
+{
+    if (m_settings.solver != ContactSolver::Soft) {
+        return;
+    }
+    const int threads = threadCount();
+    scratch.leadsKeptIsland.assign(m_slots.size(), 0);
+    for (CoupledIsland& island : scratch.islands) {
+        const std::uint32_t leader = island.bodies.front();
+        island.keepsSoftManifolds =
+            softIslandKept(m_slots[leader].softKept, island, m_slots, m_edits, threads);
+        scratch.leadsKeptIsland[leader] = island.keepsSoftManifolds ? 1 : 0;
+    }
+    // before any island reads its bodies' caches, or a body alone clears its own
+    for (std::uint32_t index = 0; index < m_slots.size(); ++index) {
+        if (m_slots[index].softKept.unstored && scratch.leadsKeptIsland[index] == 0) {
+            storeKeptSoftIsland(m_slots[index].softKept, m_slots, threads);
+        }
+    }
 }
 
 void World::findKeptPairPoints(detail::StepScratch& scratch,
