@@ -199,5 +199,42 @@ TEST(SoftKept, ACopiedWorldKeepsWhatTheOriginalKeptAndStepsTheSameBits)
     EXPECT_EQ(stateHash(copy), stateHash(world));
 }
 
+/// Two layers of 10 x 10 unit cubes, the upper shifted by a third of a cube, dropped 5 cm onto
+/// each other and the ground: one island of some 600 pairs, which takes all the threads inside
+/// its step (11.5c).
+World twoLayers(int threads)
+{
+    WorldSettings settings = softSettings();
+    settings.threads = threads;
+    World world = testing::worldWithGround(settings);
+    for (int layer = 0; layer < 2; ++layer) {
+        for (int i = 0; i < 100; ++i) {
+            const Real x = (i % 10) * 1.0 - 4.5 + layer / 3.0;
+            const Real z = (i / 10) * 1.0 - 4.5;
+            world.createBody(unitCube(Vec3(x, 0.55 + 1.05 * layer, z)));
+        }
+    }
+    return world;
+}
+
+TEST(SoftKept, KeptStepsOfALargeIslandGiveTheSameBitsOnOneAndTwoThreads)
+{
+    // settling, kept, then joined by a dropped cube and kept again: the same bits throughout
+    std::vector<World> worlds;
+    std::vector<int> kept;
+    for (const int threads : {1, 2}) {
+        World world = twoLayers(threads);
+        testing::simulate(world, 2.0, kDt);
+        int keptCount = keptSteps(world, 60);
+        world.createBody(unitCube(Vec3(0.2, 2.8, 0.1)));
+        keptCount += keptSteps(world, 120);
+        worlds.push_back(world);
+        kept.push_back(keptCount);
+    }
+    EXPECT_GT(kept[0], 100);
+    EXPECT_EQ(kept[0], kept[1]);
+    EXPECT_EQ(stateHash(worlds[0]), stateHash(worlds[1]));
+}
+
 } // namespace
 } // namespace tumble
