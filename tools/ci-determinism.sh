@@ -26,35 +26,32 @@ shortened[bench/scenes/pyramid_1240.toml]=0.4
 
 status=0
 count=0
+# compare LABEL RUN-ARGUMENTS...: the state hash with -O0, -O2, and -O2 on 2 threads
+compare() {
+    local label=$1
+    shift
+    local o0 o2 o2t2
+    o0=$(build-o0/apps/cli/tumble "$@" --threads 1 | grep '^state hash: ')
+    o2=$(build-o2/apps/cli/tumble "$@" --threads 1 | grep '^state hash: ')
+    o2t2=$(build-o2/apps/cli/tumble "$@" --threads 2 | grep '^state hash: ')
+    count=$((count + 1))
+    if [[ "$o0" != "$o2" || "$o2" != "$o2t2" ]]; then
+        echo "ci-determinism: $label differs: -O0 $o0, -O2 $o2, -O2 on 2 threads $o2t2" >&2
+        status=1
+    else
+        echo "ci-determinism: $label: ${o0#state hash: } with -O0, -O2, and -O2 on 2 threads"
+    fi
+}
+
 for scenario in scenarios/*.toml bench/scenes/pyramid_1240.toml; do
     duration=()
     if [[ -n "${shortened[$scenario]:-}" ]]; then
         duration=(--duration "${shortened[$scenario]}")
     fi
-    run=(run "$scenario" --quiet --hash "${duration[@]}")
-    o0=$(build-o0/apps/cli/tumble "${run[@]}" --threads 1 | grep '^state hash: ')
-    o2=$(build-o2/apps/cli/tumble "${run[@]}" --threads 1 | grep '^state hash: ')
-    o2t2=$(build-o2/apps/cli/tumble "${run[@]}" --threads 2 | grep '^state hash: ')
-    count=$((count + 1))
-    if [[ "$o0" != "$o2" || "$o2" != "$o2t2" ]]; then
-        echo "ci-determinism: $scenario differs: -O0 $o0, -O2 $o2, -O2 on 2 threads $o2t2" >&2
-        status=1
-    else
-        echo "ci-determinism: $scenario: ${o0#state hash: } with -O0, -O2, and -O2 on 2 threads"
-    fi
+    compare "$scenario" run "$scenario" --quiet --hash "${duration[@]}"
 done
 # The soft step (docs/physics/12) on the 55-cube pyramid over its 10 s: it lands, settles and
 # then steps on the manifolds its islands keep (12.5b).
-soft=(run scenarios/pyramid_55.toml --quiet --hash --set 'world.solver="soft"')
-o0=$(build-o0/apps/cli/tumble "${soft[@]}" --threads 1 | grep '^state hash: ')
-o2=$(build-o2/apps/cli/tumble "${soft[@]}" --threads 1 | grep '^state hash: ')
-o2t2=$(build-o2/apps/cli/tumble "${soft[@]}" --threads 2 | grep '^state hash: ')
-count=$((count + 1))
-if [[ "$o0" != "$o2" || "$o2" != "$o2t2" ]]; then
-    echo "ci-determinism: soft pyramid_55 differs: -O0 $o0, -O2 $o2, -O2 on 2 threads $o2t2" >&2
-    status=1
-else
-    echo "ci-determinism: soft pyramid_55: ${o0#state hash: } with -O0, -O2, and -O2 on 2 threads"
-fi
+compare "soft pyramid_55" run scenarios/pyramid_55.toml --quiet --hash --set 'world.solver="soft"'
 echo "ci-determinism: $count scenarios compared"
 exit "$status"

@@ -62,6 +62,15 @@ Real springGap(Real force, Real effectiveMass, Real hertz)
     return force / (effectiveMass * omega * omega);
 }
 
+std::vector<Vec3> positionsOf(const World& world, const std::vector<BodyId>& bodies)
+{
+    std::vector<Vec3> positions;
+    for (const BodyId body : bodies) {
+        positions.push_back(world.body(body).position);
+    }
+    return positions;
+}
+
 /// Steps `steps` times and counts the steps whose one island kept its manifolds.
 int keptSteps(World& world, int steps)
 {
@@ -78,10 +87,7 @@ TEST(SoftKept, ASettledColumnKeepsItsManifoldsAndStaysOnItsSprings)
     World world = testing::worldWithGround(softSettings());
     const std::vector<BodyId> cubes = addColumn(world, 5);
     testing::simulate(world, 3.0, kDt);
-    std::vector<Vec3> settled;
-    for (const BodyId cube : cubes) {
-        settled.push_back(world.body(cube).position);
-    }
+    const std::vector<Vec3> settled = positionsOf(world, cubes);
     EXPECT_EQ(keptSteps(world, 600), 600);
     // (12.2a) as for a column that builds its manifolds every step: the ground's corners of
     // effective mass 1/4 carry 5 g / 4 each on 60 Hz springs (soft_step_test.cpp)
@@ -100,10 +106,7 @@ TEST(SoftKept, AFloorInLanesKeepsItsManifoldsAndDoesNotCreep)
     World world = testing::worldWithGround(softSettings());
     const std::vector<BodyId> cubes = addFloor(world, 6);
     testing::simulate(world, 2.0, kDt);
-    std::vector<Vec3> settled;
-    for (const BodyId cube : cubes) {
-        settled.push_back(world.body(cube).position);
-    }
+    const std::vector<Vec3> settled = positionsOf(world, cubes);
     EXPECT_EQ(keptSteps(world, 600), 600);
     const Real groundGap = springGap(kGravity / 4.0, 0.25, 60.0);
     for (std::size_t i = 0; i < cubes.size(); ++i) {

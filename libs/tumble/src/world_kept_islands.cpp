@@ -92,12 +92,7 @@ void World::findKeptPairPoints(detail::StepScratch& scratch,
             continue;
         }
         const auto [lower, upper] = island.pairs[i];
-        mayTouch(m_slots, lower, upper, m_settings.contactTolerance,
-                 reachOver(m_slots[lower].body, m_settings.gravity, dt),
-                 reachOver(m_slots[upper].body, m_settings.gravity, dt), true,
-                 &scratch.pairManifolds[broadPair]);
-        scratch.pairHasPoints[broadPair] =
-            scratch.pairManifolds[broadPair].pointCount > 0 ? 1 : 0;
+        findPairPoints(scratch, broadPair, lower, upper, dt);
         island.pairHasPoints[i] = scratch.pairHasPoints[broadPair];
     }
 }

@@ -125,12 +125,7 @@ void World::addIslandPairs(detail::StepScratch& scratch, std::span<const std::ui
         if (scratch.pairAtRest[broadPair] != 0) {
             // (10.4b): the island woke in this step; its resting pair's points are those of
             // the test over the same horizon
-            mayTouch(m_slots, lower, upper, m_settings.contactTolerance,
-                     reachOver(m_slots[lower].body, m_settings.gravity, dt),
-                     reachOver(m_slots[upper].body, m_settings.gravity, dt), true,
-                     &scratch.pairManifolds[broadPair]);
-            scratch.pairHasPoints[broadPair] =
-                scratch.pairManifolds[broadPair].pointCount > 0 ? 1 : 0;
+            findPairPoints(scratch, broadPair, lower, upper, dt);
         }
         island.pairManifolds.push_back(&scratch.pairManifolds[broadPair]);
         island.pairHasPoints.push_back(scratch.pairHasPoints[broadPair]);
@@ -138,6 +133,16 @@ void World::addIslandPairs(detail::StepScratch& scratch, std::span<const std::ui
     if (!scratch.pairManifolds.empty()) {
         findKeptPairPoints(scratch, links, island, dt);
     }
+}
+
+void World::findPairPoints(detail::StepScratch& scratch, std::uint32_t broadPair,
+                           std::uint32_t lower, std::uint32_t upper, Real dt)
+{
+    mayTouch(m_slots, lower, upper, m_settings.contactTolerance,
+             reachOver(m_slots[lower].body, m_settings.gravity, dt),
+             reachOver(m_slots[upper].body, m_settings.gravity, dt), true,
+             &scratch.pairManifolds[broadPair]);
+    scratch.pairHasPoints[broadPair] = scratch.pairManifolds[broadPair].pointCount > 0 ? 1 : 0;
 }
 
 void World::advanceCoupledIslands(detail::StepScratch& scratch, Real dt)

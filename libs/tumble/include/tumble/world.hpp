@@ -134,6 +134,10 @@ private:
     [[nodiscard]] std::optional<bool> keptSoftTouch(const detail::StepScratch& scratch,
                                                     std::uint32_t lower,
                                                     std::uint32_t upper) const;
+    /// The points of the broad phase's pair `broadPair` (lower, upper) over the step, for a
+    /// pair whose test found none: a resting one (10.4b) or one answered by keptSoftTouch.
+    void findPairPoints(detail::StepScratch& scratch, std::uint32_t broadPair,
+                        std::uint32_t lower, std::uint32_t upper, Real dt);
     /// Finds the points of an island's pairs answered by keptSoftTouch when the island is not
     /// the one kept (a body joined it): its step builds its manifolds from them.
     void findKeptPairPoints(detail::StepScratch& scratch, std::span<const std::uint32_t> links,
