@@ -63,9 +63,10 @@ void World::decideKeptSoftIslands(detail::StepScratch& scratch)
     const int threads = threadCount();
     scratch.leadsKeptIsland.assign(m_slots.size(), 0);
     for (CoupledIsland& island : scratch.islands) {
+        // its bodies stayed put if the broad phase found them so (markKeptSoftIslands)
         const std::uint32_t leader = island.bodies.front();
-        island.keepsSoftManifolds =
-            softIslandKept(m_slots[leader].softKept, island, m_slots, m_edits, threads);
+        island.keepsSoftManifolds = scratch.keptLeader[leader] == leader &&
+                                    softKeptFor(m_slots[leader].softKept, island, m_edits);
         scratch.leadsKeptIsland[leader] = island.keepsSoftManifolds ? 1 : 0;
     }
     // before any island reads its bodies' caches, or a body alone clears its own
@@ -80,9 +81,7 @@ void World::findKeptPairPoints(detail::StepScratch& scratch,
                                std::span<const std::uint32_t> links, CoupledIsland& island,
                                Real dt)
 {
-    const SoftKeptIsland& kept = m_slots[island.bodies.front()].softKept;
-    if (kept.valid && kept.edits == m_edits && kept.bodies == island.bodies &&
-        kept.pairs == island.pairs) {
+    if (softKeptFor(m_slots[island.bodies.front()].softKept, island, m_edits)) {
         return;
     }
     // the island is not the one kept: its step builds its manifolds, from every pair's points

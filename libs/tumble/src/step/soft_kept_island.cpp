@@ -54,14 +54,10 @@ bool stillAt(const Body& body, const Vec3& centre, const Quat& orientation)
 
 } // namespace
 
-bool softIslandKept(const SoftKeptIsland& kept, const CoupledIsland& island,
-                    std::span<const BodySlot> slots, std::uint64_t edits, int threads)
+bool softKeptFor(const SoftKeptIsland& kept, const CoupledIsland& island, std::uint64_t edits)
 {
-    if (!kept.valid || kept.edits != edits || kept.bodies != island.bodies ||
-        kept.pairs != island.pairs) {
-        return false;
-    }
-    return softBodiesStill(*kept.buffers, island.bodies, slots, threads);
+    return kept.valid && kept.edits == edits && kept.bodies == island.bodies &&
+           kept.pairs == island.pairs;
 }
 
 bool softBodiesStill(const SoftBuffers& built, std::span<const std::uint32_t> bodies,

@@ -46,11 +46,9 @@ struct SoftKeptIsland {
     void release();
 };
 
-/// Whether `kept` holds the manifolds of this island (the same bodies and pairs, no edit of the
-/// world since) with every body still within (12.5b) of the pose they were built at. Spread
-/// over `threads`, the same answer for any number.
-bool softIslandKept(const SoftKeptIsland& kept, const CoupledIsland& island,
-                    std::span<const BodySlot> slots, std::uint64_t edits, int threads);
+/// Whether `kept` holds manifolds built for this island: the same bodies and pairs, and no
+/// edit of the world since (`edits` now). Whether its bodies stayed put is softBodiesStill.
+bool softKeptFor(const SoftKeptIsland& kept, const CoupledIsland& island, std::uint64_t edits);
 
 /// Whether every one of `bodies` (slot indices, in the order of the island the buffers were
 /// built for) is within (12.5b) of its pose in `built` (the poses its manifolds were built at).
