@@ -33,7 +33,8 @@ TEST(ParallelFor, EachPhaseSeesTheWholeOfThePreviousOne)
     // ended would find some
     constexpr std::size_t items = 4096;
     constexpr std::size_t phases = 200;
-    for (const int threads : {1, 2, 4}) {
+    // more threads than cores too: a waiting thread must give way to those still at work
+    for (const int threads : {1, 2, 4, 8}) {
         std::vector<std::atomic<std::size_t>> value(items);
         std::atomic<std::size_t> early{0};
         std::atomic<std::size_t> written{0};

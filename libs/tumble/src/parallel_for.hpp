@@ -6,6 +6,8 @@
 #include <cstddef>
 
 #ifdef TUMBLE_HAVE_OPENMP
+#include "spin_barrier.hpp"
+
 #include <omp.h>
 #endif
 
@@ -62,13 +64,18 @@ void parallelPhases(std::size_t phases, [[maybe_unused]] int threads, const Body
 {
 #ifdef TUMBLE_HAVE_OPENMP
     if (threads > 1 && phases > 0) {
+        SpinBarrier barrier;
 #pragma omp parallel num_threads(threads)
         {
             const auto share = static_cast<std::size_t>(omp_get_thread_num());
             const auto shares = static_cast<std::size_t>(omp_get_num_threads());
+            barrier.setThreads(static_cast<int>(shares));
             for (std::size_t phase = 0; phase < phases; ++phase) {
                 body(phase, share, shares);
-#pragma omp barrier
+                // the region's end waits for every thread after the last phase
+                if (phase + 1 < phases) {
+                    barrier.wait();
+                }
             }
         }
         return;
