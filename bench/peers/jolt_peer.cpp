@@ -106,6 +106,7 @@ void build(JoltWorld& jw, const PeerScene& scene) {
     jw.system.SetCombineFriction(&combineFriction);
     JPH::PhysicsSettings physicsSettings = jw.system.GetPhysicsSettings();
     physicsSettings.mAllowSleeping = scene.sleep;
+    physicsSettings.mMinVelocityForRestitution = float(scene.restitutionThreshold);
     jw.system.SetPhysicsSettings(physicsSettings);
 
     JPH::BodyInterface& bodies = jw.system.GetBodyInterface();
