@@ -65,15 +65,33 @@ double referenceNs(const std::vector<BenchRow>& rows, std::size_t first, bool sl
     return reference.value_or(0.0);
 }
 
-/// The peers' rows of a scene, each with its ratio to `reference`, appended to `rows`.
-/// Without the peers built in, benchCommand refuses --peers before any scene runs.
+/// referenceNs at `threads` threads: tumble's row at that count among rows[first..], else the
+/// one-thread reference.
+double referenceNsAt(const std::vector<BenchRow>& rows, std::size_t first, bool sleep,
+                     int threads)
+{
+    const std::string engine = sleep ? "tumble" : "tumble nosleep";
+    for (std::size_t i = first; i < rows.size(); ++i) {
+        if (rows[i].engine == engine && rows[i].threads == threads) {
+            return rows[i].nsPerBodyStep();
+        }
+    }
+    return referenceNs(rows, first, sleep);
+}
+
+/// The peers' rows of a scene appended to `rows`, each with its ratio to tumble's row
+/// (sleeping as `sleep` says) at the peer row's thread count. Without the peers built in,
+/// benchCommand refuses --peers before any scene runs.
 void addPeerRows([[maybe_unused]] const scenario::Scenario& loaded,
-                 [[maybe_unused]] const std::string& name, [[maybe_unused]] double reference,
+                 [[maybe_unused]] const std::string& name, [[maybe_unused]] std::size_t first,
+                 [[maybe_unused]] bool sleep, [[maybe_unused]] const BenchOptions& options,
                  [[maybe_unused]] int leastRuns, [[maybe_unused]] BenchTables& tables,
                  [[maybe_unused]] std::vector<BenchRow>& rows)
 {
 #ifdef TUMBLE_HAS_PEERS
-    for (BenchRow& row : runPeers(loaded, name, tables.peerSettings, leastRuns)) {
+    for (BenchRow& row :
+         runPeers(loaded, name, tables.peerSettings, options.threads, leastRuns)) {
+        const double reference = referenceNsAt(rows, first, sleep, row.threads);
         if (row.note.empty() && reference > 0.0) {
             row.ratio = row.nsPerBodyStep() / reference;
         }
@@ -110,7 +128,7 @@ void addIndependentScene(const scenario::Scenario& loaded, const std::string& na
         }
     }
     if (options.peers) {
-        addPeerRows(loaded, name, reference, kLeastRuns, tables, rows);
+        addPeerRows(loaded, name, first, true, options, kLeastRuns, tables, rows);
     }
     std::fflush(stdout);
 }
@@ -139,7 +157,7 @@ void addContactScene(const scenario::Scenario& loaded, const std::string& name,
         }
     }
     if (options.peers) {
-        addPeerRows(loaded, name, referenceNs(rows, first, sleep), leastRuns, tables, rows);
+        addPeerRows(loaded, name, first, sleep, options, leastRuns, tables, rows);
     }
     std::fflush(stdout);
 }
@@ -195,7 +213,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options)
     command->add_option("--bodies", options.bodies, "Body counts of S4 (default 100,1000,4000)")
         ->delimiter(',')
         ->check(wholeNumberIn(1, 1000000));
-    command->add_option("--threads", options.threads, "Thread counts for tumble (default 1,2)")
+    command->add_option("--threads", options.threads, "Thread counts for tumble, and for a peer with threads of its own (Jolt) (default 1,2)")
         ->delimiter(',')
         ->check(wholeNumberIn(0, kMaxThreads, " (one per core)"));
     command->add_option("--duration", options.duration,

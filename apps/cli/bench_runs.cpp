@@ -178,41 +178,66 @@ double peerSideways(const bench::PeerScene& scene, const bench::PeerResult& resu
 
 } // namespace
 
+namespace {
+
+/// One peer's row on `scene` at the scene's thread count.
+BenchRow runPeerRow(const std::string& peer, const bench::PeerScene& scene,
+                    const std::string& name, std::vector<std::string>& settingsSeen,
+                    int leastRuns)
+{
+    BenchRow row;
+    row.scenario = name;
+    row.engine = peer;
+    row.bodies = static_cast<int>(scene.bodies.size());
+    row.threads = scene.threads;
+    row.steps = scene.steps;
+    try {
+        // The first run's memory (later runs may reuse what it freed) and end state.
+        std::optional<bench::PeerResult> first;
+        const auto runOnce = [&] {
+            const bench::PeerResult result = bench::runPeer(peer, scene);
+            if (!first) {
+                first = result;
+            }
+            return result.stepSeconds;
+        };
+        row.stepSeconds = medianStepSeconds(runOnce, leastRuns, row.runs);
+        const bench::PeerResult& result = *first;
+        row.bodiesAtRest = result.bodiesAtRest;
+        row.heapBytes = result.heapBytes;
+        row.heapBytesAtEnd = result.heapBytesAtEnd;
+        row.maxSideways = peerSideways(scene, result);
+        const std::string line = result.engine + ": " + result.settings;
+        if (std::find(settingsSeen.begin(), settingsSeen.end(), line) == settingsSeen.end()) {
+            settingsSeen.push_back(line);
+        }
+    } catch (const bench::PeerCapacityError& error) {
+        row.note = std::string("cannot hold the scene: ") + error.what();
+    }
+    return row;
+}
+
+} // namespace
+
 std::vector<BenchRow> runPeers(const scenario::Scenario& loaded, const std::string& name,
-                               std::vector<std::string>& settingsSeen, int leastRuns)
+                               std::vector<std::string>& settingsSeen,
+                               const std::vector<int>& threads, int leastRuns)
 {
     std::vector<BenchRow> rows;
-    const bench::PeerScene scene = peerScene(loaded);
+    bench::PeerScene scene = peerScene(loaded);
     for (const std::string& peer : bench::availablePeers()) {
-        BenchRow row;
-        row.scenario = name;
-        row.engine = peer;
-        row.bodies = static_cast<int>(loaded.bodies.size());
-        row.steps = scene.steps;
-        try {
-            // The first run's memory (later runs may reuse what it freed) and end state.
-            std::optional<bench::PeerResult> first;
-            const auto runOnce = [&] {
-                const bench::PeerResult result = bench::runPeer(peer, scene);
-                if (!first) {
-                    first = result;
-                }
-                return result.stepSeconds;
-            };
-            row.stepSeconds = medianStepSeconds(runOnce, leastRuns, row.runs);
-            const bench::PeerResult& result = *first;
-            row.bodiesAtRest = result.bodiesAtRest;
-            row.heapBytes = result.heapBytes;
-            row.heapBytesAtEnd = result.heapBytesAtEnd;
-            row.maxSideways = peerSideways(scene, result);
-            const std::string line = result.engine + ": " + result.settings;
-            if (std::find(settingsSeen.begin(), settingsSeen.end(), line) == settingsSeen.end()) {
-                settingsSeen.push_back(line);
-            }
-        } catch (const bench::PeerCapacityError& error) {
-            row.note = std::string("cannot hold the scene: ") + error.what();
+        scene.threads = 1;
+        rows.push_back(runPeerRow(peer, scene, name, settingsSeen, leastRuns));
+        if (!bench::peerRunsOnThreads(peer)) {
+            continue;
         }
-        rows.push_back(row);
+        // an engine with its own threads also at tumble's other thread counts, for its scaling
+        for (const int count : threads) {
+            if (count > 1) {
+                scene.threads = count;
+                rows.push_back(runPeerRow(peer, scene, name, settingsSeen, leastRuns));
+            }
+        }
     }
     return rows;
 }

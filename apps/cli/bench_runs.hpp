@@ -53,11 +53,12 @@ BenchRow runTumble(const scenario::Scenario& loaded, const std::string& name, in
                    bool sleep, int leastRuns = kLeastRuns);
 
 #ifdef TUMBLE_HAS_PEERS
-/// Every peer engine compiled in on the same bodies, sleeping as the scenario says; each
-/// engine's settings line is added to `settingsSeen` once.
+/// Every peer engine compiled in on the same bodies, sleeping as the scenario says, on one
+/// thread, and an engine that can use several (bench::peerRunsOnThreads) also at each count
+/// above one in `threads`; each engine's settings line is added to `settingsSeen` once.
 std::vector<BenchRow> runPeers(const scenario::Scenario& loaded, const std::string& name,
                                std::vector<std::string>& settingsSeen,
-                               int leastRuns = kLeastRuns);
+                               const std::vector<int>& threads, int leastRuns = kLeastRuns);
 #endif
 
 } // namespace tumble::cli

@@ -1,4 +1,5 @@
-// Jolt peer: one JPH::PhysicsSystem stepped on one thread with Jolt's default solver settings, a
+// Jolt peer: one JPH::PhysicsSystem stepped with Jolt's default solver settings on one thread (or
+// on Jolt's own thread pool when the scene asks for several), a
 // static box for the ground and sleeping at Jolt's default thresholds when the scene allows it.
 // Jolt is an external build (tools/build-jolt-peer.sh); this file must be compiled with the same
 // JPH_* definitions and SIMD flags as libJolt.a, which VerifyJoltVersionID() checks at run time.
@@ -10,6 +11,7 @@
 
 #include <Jolt/Core/Factory.h>
 #include <Jolt/Core/JobSystemSingleThreaded.h>
+#include <Jolt/Core/JobSystemThreadPool.h>
 #include <Jolt/Core/TempAllocator.h>
 #include <Jolt/Physics/Body/BodyCreationSettings.h>
 #include <Jolt/Physics/Collision/BroadPhase/BroadPhaseLayerInterfaceTable.h>
@@ -150,10 +152,14 @@ void build(JoltWorld& jw, const PeerScene& scene) {
     jw.system.OptimizeBroadPhase();
 }
 
-std::string describe(const JoltWorld& jw, bool sleep) {
+std::string describe(const JoltWorld& jw, bool sleep, int threads) {
     const JPH::PhysicsSettings& settings = jw.system.GetPhysicsSettings();
     std::ostringstream out;
-    out << "PhysicsSystem, Update(dt, 1 collision step) on JobSystemSingleThreaded, "
+    out << "PhysicsSystem, Update(dt, 1 collision step) on "
+        << (threads > 1 ? "JobSystemThreadPool (the calling thread and " +
+                              std::to_string(threads - 1) + " workers)"
+                        : std::string("JobSystemSingleThreaded"))
+        << ", "
         << settings.mNumVelocitySteps << " velocity / " << settings.mNumPositionSteps
         << " position iterations, baumgarte " << settings.mBaumgarte << ", penetration slop "
         << settings.mPenetrationSlop << " m, speculative distance "
@@ -193,7 +199,15 @@ PeerResult runJolt(const PeerScene& scene) {
     result.engine = joltName();
 
     JPH::TempAllocatorImpl tempAllocator(kTempAllocatorBytes);
-    JPH::JobSystemSingleThreaded jobSystem(JPH::cMaxPhysicsJobs);
+    // Several threads: Jolt's own pool, whose Update also runs jobs on the calling thread while
+    // it waits, so `threads - 1` workers make `threads` threads at work.
+    std::unique_ptr<JPH::JobSystem> jobSystem;
+    if (scene.threads > 1) {
+        jobSystem = std::make_unique<JPH::JobSystemThreadPool>(
+            JPH::cMaxPhysicsJobs, JPH::cMaxPhysicsBarriers, scene.threads - 1);
+    } else {
+        jobSystem = std::make_unique<JPH::JobSystemSingleThreaded>(JPH::cMaxPhysicsJobs);
+    }
 
     const long long heapBefore = heapInUse();
     JoltWorld jw;
@@ -202,7 +216,8 @@ PeerResult runJolt(const PeerScene& scene) {
 
     const float dt = float(scene.dt);
     result.stepSeconds = timeSteps(scene.steps, [&] {
-        const JPH::EPhysicsUpdateError error = jw.system.Update(dt, 1, &tempAllocator, &jobSystem);
+        const JPH::EPhysicsUpdateError error =
+            jw.system.Update(dt, 1, &tempAllocator, jobSystem.get());
         if (error != JPH::EPhysicsUpdateError::None) {
             throw PeerCapacityError("tumble peers: Jolt ran out of body pairs or contact "
                                     "constraints (EPhysicsUpdateError " +
@@ -226,7 +241,7 @@ PeerResult runJolt(const PeerScene& scene) {
         result.finalPositions.push_back(
             {double(p.GetX()), double(p.GetY()), double(p.GetZ())});
     }
-    result.settings = describe(jw, scene.sleep);
+    result.settings = describe(jw, scene.sleep, scene.threads);
 
     // Bodies are removed and destroyed before the system goes, the order Jolt's samples keep.
     jw.bodies.push_back(jw.ground);

@@ -39,6 +39,7 @@ using Runner = PeerResult (*)(const PeerScene&);
 struct Entry {
     std::string name;
     Runner run;
+    bool threaded = false;
 };
 
 std::vector<Entry> entries() {
@@ -53,7 +54,7 @@ std::vector<Entry> entries() {
     list.push_back({detail::mujocoName(), &detail::runMujoco});
 #endif
 #ifdef TUMBLE_PEER_JOLT
-    list.push_back({detail::joltName(), &detail::runJolt});
+    list.push_back({detail::joltName(), &detail::runJolt, true});
 #endif
 #ifdef TUMBLE_PEER_BOX3D
     list.push_back({detail::box3dName(), &detail::runBox3d});
@@ -79,6 +80,9 @@ void validate(const PeerScene& scene) {
     if (!(scene.dt > 0.0) || !std::isfinite(scene.dt)) {
         throw std::invalid_argument("tumble peers: dt must be positive and finite");
     }
+    if (scene.threads < 1) {
+        throw std::invalid_argument("tumble peers: threads must be at least 1");
+    }
     if (scene.steps < 0) {
         throw std::invalid_argument("tumble peers: steps must not be negative");
     }
@@ -98,6 +102,15 @@ std::vector<std::string> availablePeers() {
         names.push_back(entry.name);
     }
     return names;
+}
+
+bool peerRunsOnThreads(const std::string& name) {
+    for (const Entry& entry : entries()) {
+        if (matches(entry.name, name)) {
+            return entry.threaded;
+        }
+    }
+    return false;
 }
 
 PeerResult runPeer(const std::string& name, const PeerScene& scene) {

@@ -36,6 +36,8 @@ struct PeerScene {
     /// restitution: every engine is given the scene's (tumble's `world.restitution_threshold`),
     /// so that they bounce alike; MuJoCo's spring-damper contacts have no such threshold.
     double restitutionThreshold = 1.0;
+    /// Threads the engine steps on, where it can use several (peerRunsOnThreads).
+    int threads = 1;
 };
 
 struct PeerResult {
@@ -62,6 +64,10 @@ struct PeerCapacityError : std::runtime_error {
 
 /// Names accepted by runPeer, one per engine compiled in (e.g. "Bullet 3.24"); may be empty.
 std::vector<std::string> availablePeers();
+
+/// Whether the named engine steps on PeerScene::threads threads here (Jolt, through its own
+/// thread pool); the others step on one whatever the scene asks.
+bool peerRunsOnThreads(const std::string& name);
 
 /// Runs the scene in the named engine. Throws std::invalid_argument for an unknown name or an
 /// unusable scene (dt <= 0, steps < 0, non-positive mass or size), PeerCapacityError if the engine
