@@ -127,6 +127,36 @@ TEST(SoftKept, ABoxHoldingOnASlopeKeepsItsManifoldAndDoesNotCreep)
     EXPECT_LT(glm::length(slope.world.body(slope.box).position - held), 1e-6);
 }
 
+TEST(SoftKept, CubesOnStaticBlocksKeepTheirManifoldsWhicheverSideIsTheLowerSlot)
+{
+    // a pair is kept under its lower slot: the first block comes before its column (a static
+    // lower side), the second after its cube (a dynamic one); each island keeps its manifolds,
+    // with every pair touching and none moving
+    World world(softSettings());
+    const auto block = [&](Real x) {
+        return world.createBody(BodyDef{.motion = BodyMotion::Static,
+                                        .shape = Cuboid{Vec3(2.0, 1.0, 2.0)},
+                                        .position = Vec3(x, -0.5, 0.0)});
+    };
+    block(0.0);
+    const std::vector<BodyId> cubes{world.createBody(unitCube(Vec3(0.0, 0.5, 0.0))),
+                                    world.createBody(unitCube(Vec3(0.0, 1.5, 0.0))),
+                                    world.createBody(unitCube(Vec3(4.0, 0.5, 0.0)))};
+    block(4.0);
+    testing::simulate(world, 3.0, kDt);
+    const std::vector<Vec3> settled = positionsOf(world, cubes);
+    for (int s = 0; s < 60; ++s) {
+        world.step(kDt);
+        ASSERT_EQ(world.solverStatistics().islands, 2u) << s;
+        ASSERT_EQ(world.solverStatistics().keptIslands, 2u) << s;
+        // four corners on each block and four on the face between the column's cubes
+        ASSERT_EQ(world.solverStatistics().contactPoints, 12u) << s;
+    }
+    for (std::size_t i = 0; i < cubes.size(); ++i) {
+        EXPECT_LT(glm::length(world.body(cubes[i]).position - settled[i]), 1e-6) << i;
+    }
+}
+
 TEST(SoftKept, ASlidingBoxBuildsItsManifoldEveryStep)
 {
     // tan 30 deg > mu = 0.3: it slides, moving more than the bound every step

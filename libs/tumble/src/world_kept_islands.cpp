@@ -20,6 +20,8 @@ void World::markKeptSoftIslands(detail::StepScratch& scratch) const
     if (m_settings.solver != ContactSolver::Soft) {
         return;
     }
+    scratch.keptPairsFirst.resize(m_slots.size());
+    scratch.keptPairsEnd.resize(m_slots.size());
     for (std::uint32_t index = 0; index < m_slots.size(); ++index) {
         const BodySlot& slot = m_slots[index];
         const SoftKeptIsland& kept = slot.softKept;
@@ -29,6 +31,24 @@ void World::markKeptSoftIslands(detail::StepScratch& scratch) const
         }
         for (const std::uint32_t body : kept.bodies) {
             scratch.keptLeader[body] = index;
+            scratch.keptPairsFirst[body] = 0;
+            scratch.keptPairsEnd[body] = 0;
+        }
+        // the pairs are sorted by their lower side: each body's run of them, so that a pair is
+        // found among a handful (a static lower side is any island's, and is searched for)
+        const auto& pairs = kept.pairs;
+        std::size_t first = 0;
+        while (first < pairs.size()) {
+            const std::uint32_t lower = pairs[first].first;
+            std::size_t end = first + 1;
+            while (end < pairs.size() && pairs[end].first == lower) {
+                ++end;
+            }
+            if (scratch.keptLeader[lower] == index) {
+                scratch.keptPairsFirst[lower] = static_cast<std::uint32_t>(first);
+                scratch.keptPairsEnd[lower] = static_cast<std::uint32_t>(end);
+            }
+            first = end;
         }
     }
 }
@@ -52,7 +72,12 @@ std::optional<bool> World::keptSoftTouch(const detail::StepScratch& scratch,
     const std::uint32_t leader = withinOne ? leaderLower : leaderUpper;
     const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs =
         m_slots[leader].softKept.pairs;
-    return std::binary_search(pairs.begin(), pairs.end(), std::pair{lower, upper});
+    if (!withinOne) {
+        return std::binary_search(pairs.begin(), pairs.end(), std::pair{lower, upper});
+    }
+    const auto first = pairs.begin() + scratch.keptPairsFirst[lower];
+    const auto end = pairs.begin() + scratch.keptPairsEnd[lower];
+    return std::any_of(first, end, [&](const auto& pair) { return pair.second == upper; });
 }
 
 void World::decideKeptSoftIslands(detail::StepScratch& scratch)

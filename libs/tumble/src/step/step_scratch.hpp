@@ -44,6 +44,10 @@ struct StepScratch {
     /// Each slot's kept soft island whose bodies all stayed put (its lowest body's slot), or
     /// kNotKept; and 1 for a pair answered from that island's pairs rather than tested (12.5b).
     std::vector<std::uint32_t> keptLeader;
+    /// For a body of such an island, its pairs as the lower side: [first, end) in the
+    /// island's sorted pair list.
+    std::vector<std::uint32_t> keptPairsFirst;
+    std::vector<std::uint32_t> keptPairsEnd;
     std::vector<std::uint8_t> pairFromKept;
     /// 1 for the lowest body of an island that keeps its soft manifolds this step.
     std::vector<std::uint8_t> leadsKeptIsland;
