@@ -258,9 +258,9 @@ int benchCommand(const BenchOptions& options)
     if (!tables.contact.empty()) {
         printContactRows(tables.contact);
     }
-    std::printf("ratio: a peer's ns/body-step over tumble's on one thread (with the scene's "
-                "sleeping); for tumble at threads 0 (one per core, tumble run's default), its own "
-                "over one thread's\n");
+    std::printf("ratio: a peer's ns/body-step over tumble's default solver at the peer's thread "
+                "count (with the scene's sleeping); for tumble at threads 0 (one per core, tumble "
+                "run's default), its own over one thread's\n");
     for (const std::string& line : tables.peerSettings) {
         std::printf("settings of %s\n", line.c_str());
     }
