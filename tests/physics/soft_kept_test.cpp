@@ -269,5 +269,30 @@ TEST(SoftKept, KeptStepsOfALargeIslandGiveTheSameBitsOnOneAndTwoThreads)
     EXPECT_EQ(stateHash(worlds[0]), stateHash(worlds[1]));
 }
 
+TEST(SoftKept, AnIslandSplitInHalvesGivesTheSameBitsOnAnyThreadCount)
+{
+    // (12.9): a floor of 24 x 24 cubes has more than 1 024 manifolds, so its bodies' halves are
+    // swept a thread each; a row of cubes dropped across it keeps the island moving
+    std::vector<World> worlds;
+    for (const int threads : {1, 2, 3}) {
+        WorldSettings settings = softSettings();
+        settings.threads = threads;
+        World world = testing::worldWithGround(settings);
+        addFloor(world, 24);
+        for (int i = 0; i < 20; ++i) {
+            world.createBody(unitCube(Vec3(1.5 + i, 1.8, 11.5 - 0.5 * i)));
+        }
+        for (int s = 0; s < 90; ++s) {
+            world.step(kDt);
+        }
+        // at least 1 024 manifolds of at most four points in the one island
+        EXPECT_GT(world.solverStatistics().contactPoints, 4u * 1024u);
+        EXPECT_EQ(world.solverStatistics().islands, 1u);
+        worlds.push_back(world);
+    }
+    EXPECT_EQ(stateHash(worlds[0]), stateHash(worlds[1]));
+    EXPECT_EQ(stateHash(worlds[0]), stateHash(worlds[2]));
+}
+
 } // namespace
 } // namespace tumble

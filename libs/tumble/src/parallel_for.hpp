@@ -86,6 +86,26 @@ void parallelPhases(std::size_t phases, [[maybe_unused]] int threads, const Body
     }
 }
 
+/// parallelFor with the iterations in two fixed shares: [0, split) on the first thread and
+/// [split, count) on the second (any further thread idle), where threads > 1 and
+/// 0 < split < count; else parallelFor. For loops over data the same two threads work on in
+/// the same shares elsewhere (a soft island's halves, (12.9)), so that it stays in their caches.
+template <typename Body>
+void parallelForSplit(std::size_t count, std::size_t split, int threads, const Body& body)
+{
+    if (split == 0 || split >= count || threads < 2) {
+        parallelFor(count, threads, body);
+        return;
+    }
+    parallelPhases(1, 2, [&](std::size_t, std::size_t share, std::size_t shares) {
+        const std::size_t first = share == 0 ? 0 : split;
+        const std::size_t last = share == 0 && shares > 1 ? split : count;
+        for (std::size_t i = first; i < last; ++i) {
+            body(i);
+        }
+    });
+}
+
 /// Whether `holds(i)` for some i in [0, count), each i tested on one of `threads` threads in a
 /// static schedule when threads > 1. The answer does not depend on the number of threads.
 template <typename Predicate>

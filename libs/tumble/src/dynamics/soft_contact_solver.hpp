@@ -161,6 +161,12 @@ inline constexpr std::size_t kThreadedColourManifolds = 256;
 /// With no offsets every pass goes in order.
 struct SoftColours {
     std::vector<std::uint32_t> offsets;
+    /// (12.9): the first halfColours[0] colours hold only contacts among the first half of the
+    /// island's bodies, the next halfColours[1] only contacts among the second half; the rest
+    /// cross between the halves. Both 0 where the island is not split.
+    std::array<std::uint32_t, 2> halfColours{0, 0};
+    /// The first body of the second half (the island's order); 0 where it is not split.
+    std::uint32_t halfSplit = 0;
 };
 
 class SoftLanes;

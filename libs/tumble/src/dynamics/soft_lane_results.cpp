@@ -82,6 +82,25 @@ void restituteBlocks(std::span<LaneBlock> blocks, std::span<SoftBody> bodies, Re
     }
 }
 
+/// softResultOf for each lane of `block`, into the manifold's index in `results`.
+void resultsOfBlock(const LaneBlock& block, std::span<SoftContactResult> results)
+{
+    for (std::uint32_t lane = 0; lane < block.lanes; ++lane) {
+        const auto l = static_cast<int>(lane);
+        SoftContactResult& result = results[block.manifold[lane]];
+        result.pointCount = pointsOf(block, lane);
+        for (int k = 0; k < result.pointCount; ++k) {
+            result.normalImpulses[k] = block.points[k].normalImpulse[lane];
+            result.normalWork[k] = block.points[k].normalWork[lane];
+        }
+        // as softResultOf forms it
+        result.frictionImpulse = block.frictionImpulse1[lane] * laneOf(block.tangent1, l) +
+                                 block.frictionImpulse2[lane] * laneOf(block.tangent2, l);
+        result.twistImpulse = block.twistImpulse[lane];
+        result.frictionWork = block.frictionWork[lane];
+    }
+}
+
 } // namespace
 
 void SoftLanes::restitute(std::span<SoftBody> bodies, Real threshold, int threads)
@@ -95,21 +114,9 @@ void SoftLanes::restitute(std::span<SoftBody> bodies, Real threshold, int thread
 void SoftLanes::results(std::span<SoftContactResult> results, int threads) const
 {
     const Storage& storage = *m_storage;
-    parallelFor(storage.blocks.size(), threads, [&](std::size_t b) {
-        const LaneBlock& block = storage.blocks[b];
-        for (std::uint32_t lane = 0; lane < block.lanes; ++lane) {
-            const auto l = static_cast<int>(lane);
-            SoftContactResult& result = results[block.manifold[lane]];
-            result.pointCount = pointsOf(block, lane);
-            for (int k = 0; k < result.pointCount; ++k) {
-                result.normalImpulses[k] = block.points[k].normalImpulse[lane];
-                result.normalWork[k] = block.points[k].normalWork[lane];
-            }
-            // as softResultOf forms it
-            result.frictionImpulse = block.frictionImpulse1[lane] * laneOf(block.tangent1, l) +
-                                     block.frictionImpulse2[lane] * laneOf(block.tangent2, l);
-            result.twistImpulse = block.twistImpulse[lane];
-            result.frictionWork = block.frictionWork[lane];
+    forEachBlockShare(storage, threads, [&](std::size_t first, std::size_t last) {
+        for (std::size_t b = first; b < last; ++b) {
+            resultsOfBlock(storage.blocks[b], results);
         }
     });
 }

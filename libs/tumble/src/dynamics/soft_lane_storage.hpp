@@ -7,7 +7,9 @@
 #include "parallel_for.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace tumble {
@@ -31,30 +33,94 @@ struct SoftLanes::Storage {
     std::vector<std::uint32_t> laneCount;
     /// Whether some colour has kThreadedLaneManifolds or more.
     bool anyThreadedColour = false;
+    /// SoftColours::halfColours of the colours packed.
+    std::array<std::uint32_t, 2> halfColours{0, 0};
 };
 
 namespace soft_rows {
 
-/// Calls `visit(first, last)` over the blocks of every colour, colour after colour, over
-/// `threads`: a colour of kThreadedLaneManifolds or more split into one run of blocks a thread,
-/// as equal as whole blocks allow (the blocks cost alike and the threads meet at the colour's
-/// end), a smaller one on the first thread whole.
+/// The blocks of a split island's halves (SoftColours::halfColours) that thread `share` of
+/// `shares` sweeps: the first half's colours on the first thread, the second half's on the
+/// second, each colour after colour with no barrier (the halves share no body); with one thread
+/// both. [first, last) of the blocks; empty for a third thread.
+template <typename Storage>
+std::pair<std::size_t, std::size_t> halfBlocks(const Storage& storage, std::size_t share,
+                                               std::size_t shares)
+{
+    const std::uint32_t firstHalf = storage.halfColours[0];
+    const std::uint32_t bothHalves = firstHalf + storage.halfColours[1];
+    if (shares == 1) {
+        return {storage.colourBlocks[0], storage.colourBlocks[bothHalves]};
+    }
+    if (share >= 2) {
+        return {0, 0};
+    }
+    return {storage.colourBlocks[share == 0 ? 0 : firstHalf],
+            storage.colourBlocks[share == 0 ? firstHalf : bothHalves]};
+}
+
+/// The run of colour `colour`'s blocks that thread `share` of `shares` sweeps: a colour of
+/// kThreadedLaneManifolds or more split into one run a thread, as equal as whole blocks allow
+/// (the blocks cost alike and the threads meet at the colour's end), a smaller one on the first
+/// thread whole.
+template <typename Storage>
+std::pair<std::size_t, std::size_t> colourShare(const Storage& storage, std::size_t colour,
+                                                std::size_t share, std::size_t shares)
+{
+    const std::size_t begin = storage.colourBlocks[colour];
+    const std::size_t end = storage.colourBlocks[colour + 1];
+    if (storage.colourManifolds[colour] < kThreadedLaneManifolds || shares == 1) {
+        return share == 0 ? std::pair{begin, end} : std::pair{begin, begin};
+    }
+    const std::size_t blocks = end - begin;
+    return {begin + share * blocks / shares, begin + (share + 1) * blocks / shares};
+}
+
+/// Calls `visit(first, last)` over the blocks of every colour, in the colours' order, over
+/// `threads`: first the halves of a split island, a thread each (halfBlocks), then each colour
+/// across the halves, or every colour of an island not split, shared as colourShare says, the
+/// threads meeting after each.
 template <typename Storage, typename Visit>
 void forEachColour(const Storage& storage, int threads, const Visit& visit)
 {
-    const int used = storage.anyThreadedColour ? threads : 1;
-    parallelPhases(storage.colourManifolds.size(), used,
-                   [&](std::size_t colour, std::size_t share, std::size_t shares) {
-        const std::size_t begin = storage.colourBlocks[colour];
-        const std::size_t end = storage.colourBlocks[colour + 1];
-        if (storage.colourManifolds[colour] < kThreadedLaneManifolds || shares == 1) {
-            if (share == 0) {
+    const std::size_t halves = storage.halfColours[0] + storage.halfColours[1];
+    const std::size_t colours = storage.colourManifolds.size();
+    const std::size_t first = halves > 0 ? 1 : 0;
+    const int used = storage.anyThreadedColour || halves > 0 ? threads : 1;
+    parallelPhases(first + colours - halves, used,
+                   [&](std::size_t phase, std::size_t share, std::size_t shares) {
+        const auto [begin, end] = phase < first
+                                      ? halfBlocks(storage, share, shares)
+                                      : colourShare(storage, halves + phase - first, share,
+                                                    shares);
+        if (begin < end) {
+            visit(begin, end);
+        }
+    });
+}
+
+/// Calls `visit(first, last)` over every block once, each on the thread forEachColour gives it,
+/// with no barrier: for work that reads and writes only the blocks, so that each block stays in
+/// the cache of the thread that sweeps it.
+template <typename Storage, typename Visit>
+void forEachBlockShare(const Storage& storage, int threads, const Visit& visit)
+{
+    const std::size_t halves = storage.halfColours[0] + storage.halfColours[1];
+    const std::size_t colours = storage.colourManifolds.size();
+    const int used = storage.anyThreadedColour || halves > 0 ? threads : 1;
+    parallelPhases(1, used, [&](std::size_t, std::size_t share, std::size_t shares) {
+        if (halves > 0) {
+            const auto [begin, end] = halfBlocks(storage, share, shares);
+            if (begin < end) {
                 visit(begin, end);
             }
-            return;
         }
-        const std::size_t blocks = end - begin;
-        visit(begin + share * blocks / shares, begin + (share + 1) * blocks / shares);
+        for (std::size_t colour = halves; colour < colours; ++colour) {
+            const auto [begin, end] = colourShare(storage, colour, share, shares);
+            if (begin < end) {
+                visit(begin, end);
+            }
+        }
     });
 }
 

@@ -74,6 +74,26 @@ void emptyBlock(LaneBlock& block, std::uint32_t staticIndex)
     }
 }
 
+/// The `lanes` manifolds from `firstManifold` (by their index in colour order) packed into
+/// `block`, their rows built.
+void packBlock(LaneBlock& block, std::uint32_t firstManifold, std::uint32_t lanes,
+               const SoftLanes::ManifoldSource& source, std::span<const SoftBody> bodies)
+{
+    emptyBlock(block, static_cast<std::uint32_t>(bodies.size() - 1));
+    block.lanes = lanes;
+    block.everyPoint = block.lanes == kLanes;
+    for (std::uint32_t lane = 0; lane < block.lanes; ++lane) {
+        const std::uint32_t index = firstManifold + lane;
+        const SoftManifold m = source(index);
+        block.manifold[lane] = index;
+        block.bodyA[lane] = m.bodyA;
+        block.bodyB[lane] = m.bodyB;
+        block.everyPoint = block.everyPoint && m.pointCount == 4;
+        packLane(block, static_cast<int>(lane), m, bodies);
+    }
+    prepareLaneRows(block, bodies);
+}
+
 /// solveSoft on one block; EveryPoint where the block has every point (the same bits).
 template <bool EveryPoint>
 TUMBLE_WIDE_INLINE void solveBlock(LaneBlock& block, std::span<SoftBody> bodies,
@@ -137,6 +157,32 @@ void warmStartBlocks(std::span<const LaneBlock> blocks, std::span<SoftBody> bodi
     }
 }
 
+/// restartSoftManifold on each lane of `block`, the same arithmetic.
+void restartBlock(LaneBlock& block, std::span<const SoftBody> bodies,
+                  std::span<const std::pair<Real, Real>> frictions)
+{
+    for (std::uint32_t lane = 0; lane < block.lanes; ++lane) {
+        const auto l = static_cast<int>(lane);
+        const SoftBody& a = bodies[block.bodyA[lane]];
+        const SoftBody& b = bodies[block.bodyB[lane]];
+        const Vec3 normal = laneOf(block.normal, l);
+        for (LanePoint& p : block.points) {
+            if (p.active[l] == 0) {
+                continue;
+            }
+            p.relativeVelocity[l] = glm::dot(
+                normal, relativeVelocityAt(a, b, laneOf(p.anchorA, l), laneOf(p.anchorB, l)));
+            p.maxNormalImpulse[l] = 0.0;
+            p.normalWork[l] = 0.0;
+        }
+        block.frictionWork[l] = 0.0;
+        const auto [staticFriction, kineticFriction] = frictions[block.manifold[lane]];
+        block.friction[l] = frictionAtCentre(
+            relativeVelocityAt(a, b, laneOf(block.centreA, l), laneOf(block.centreB, l)), normal,
+            staticFriction, kineticFriction);
+    }
+}
+
 } // namespace
 
 SoftLanes::SoftLanes() : m_storage(std::make_unique<Storage>()) {}
@@ -160,28 +206,10 @@ void SoftLanes::restart(std::span<const SoftBody> bodies,
                         std::span<const std::pair<Real, Real>> frictions, int threads)
 {
     Storage& storage = *m_storage;
-    // each block writes only itself; a lane's arithmetic is restartSoftManifold's
-    parallelFor(storage.blocks.size(), threads, [&](std::size_t index) {
-        LaneBlock& block = storage.blocks[index];
-        for (std::uint32_t lane = 0; lane < block.lanes; ++lane) {
-            const auto l = static_cast<int>(lane);
-            const SoftBody& a = bodies[block.bodyA[lane]];
-            const SoftBody& b = bodies[block.bodyB[lane]];
-            const Vec3 normal = laneOf(block.normal, l);
-            for (LanePoint& p : block.points) {
-                if (p.active[l] == 0) {
-                    continue;
-                }
-                p.relativeVelocity[l] = glm::dot(
-                    normal, relativeVelocityAt(a, b, laneOf(p.anchorA, l), laneOf(p.anchorB, l)));
-                p.maxNormalImpulse[l] = 0.0;
-                p.normalWork[l] = 0.0;
-            }
-            block.frictionWork[l] = 0.0;
-            const auto [staticFriction, kineticFriction] = frictions[block.manifold[lane]];
-            block.friction[l] = frictionAtCentre(
-                relativeVelocityAt(a, b, laneOf(block.centreA, l), laneOf(block.centreB, l)),
-                normal, staticFriction, kineticFriction);
+    // each block writes only itself, on the thread that sweeps it
+    forEachBlockShare(storage, threads, [&](std::size_t first, std::size_t last) {
+        for (std::size_t index = first; index < last; ++index) {
+            restartBlock(storage.blocks[index], bodies, frictions);
         }
     });
 }
@@ -199,6 +227,7 @@ void SoftLanes::pack(const ManifoldSource& source, const SoftColours& colours,
     storage.colourBlocks.assign(1, 0);
     storage.colourManifolds.clear();
     storage.anyThreadedColour = false;
+    storage.halfColours = colours.halfColours;
     const std::size_t groups = colours.offsets.empty() ? 0 : colours.offsets.size() - 1;
     // every group but the last (the overflow) is a colour
     std::size_t blockCount = 0;
@@ -210,7 +239,6 @@ void SoftLanes::pack(const ManifoldSource& source, const SoftColours& colours,
         storage.anyThreadedColour =
             storage.anyThreadedColour || size >= kThreadedLaneManifolds;
     }
-    const auto staticIndex = static_cast<std::uint32_t>(bodies.size() - 1);
     // grown at least twofold: islands of every size take turns in one thread's lanes, and a
     // vector grown to each larger one's size exactly would take fresh pages at every growth
     if (blockCount > storage.blocks.capacity()) {
@@ -230,21 +258,12 @@ void SoftLanes::pack(const ManifoldSource& source, const SoftColours& colours,
                 static_cast<std::uint32_t>(std::min<std::size_t>(kLanes, end - first));
         }
     }
-    parallelFor(blockCount, threads, [&](std::size_t b) {
-        LaneBlock& block = storage.blocks[b];
-        emptyBlock(block, staticIndex);
-        block.lanes = storage.laneCount[b];
-        block.everyPoint = block.lanes == kLanes;
-        for (std::uint32_t lane = 0; lane < block.lanes; ++lane) {
-            const std::uint32_t index = storage.firstManifold[b] + lane;
-            const SoftManifold m = source(index);
-            block.manifold[lane] = index;
-            block.bodyA[lane] = m.bodyA;
-            block.bodyB[lane] = m.bodyB;
-            block.everyPoint = block.everyPoint && m.pointCount == 4;
-            packLane(block, static_cast<int>(lane), m, bodies);
+    // each block packed by the thread that sweeps it, so that its lines start in that cache
+    forEachBlockShare(storage, threads, [&](std::size_t first, std::size_t last) {
+        for (std::size_t b = first; b < last; ++b) {
+            packBlock(storage.blocks[b], storage.firstManifold[b], storage.laneCount[b], source,
+                      bodies);
         }
-        prepareLaneRows(block, bodies);
     });
 }
 

@@ -60,6 +60,14 @@ private:
     /// over h (none for h = 0); then keeps its kinetic energy in `m_buffers.kinetic`.
     void bookWorkAndGravity(Real h, bool bookWork);
     Body& body(std::size_t local) { return m_slots[m_island.bodies[local]].body; }
+    /// visit(i) for each of the island's bodies, each half of a split island on the thread that
+    /// sweeps its colours (12.9); each call writes only body i's entries.
+    template <typename Visit>
+    void forEachBody(const Visit& visit)
+    {
+        parallelForSplit(m_island.bodies.size(), m_buffers.order.colours.halfSplit,
+                         m_context.threads, visit);
+    }
 
     const CoupledIsland& m_island;
     std::span<BodySlot> m_slots;
@@ -134,7 +142,7 @@ void SoftStep::startBodies()
     m_buffers.startRotationsT.resize(count);
     m_buffers.startOrientations.resize(count);
     // each body writes only its own entries
-    parallelFor(count, m_context.threads, [&](std::size_t i) {
+    forEachBody([&](std::size_t i) {
         const Body& b = body(i);
         m_buffers.energies[i] = energyOf(b, m_settings.gravity);
         m_buffers.kineticStart[i] = b.kineticEnergy();
@@ -168,7 +176,6 @@ void SoftStep::collectResults()
 
 void SoftStep::substep(Real h, const SoftSolveSettings& solve, bool bookLast)
 {
-    const std::size_t count = m_island.bodies.size();
     std::vector<SoftBody>& bodies = m_buffers.bodies;
     bookWorkAndGravity(h, bookLast);
     const SoftColours& colours = m_buffers.order.colours;
@@ -177,7 +184,7 @@ void SoftStep::substep(Real h, const SoftSolveSettings& solve, bool bookLast)
     warmStartSoft(m_buffers.manifolds, bodies, colours, threads, lanes);
     solveSoft(m_buffers.manifolds, bodies, solve, true, colours, threads, lanes);
     // (12.4): positions from the solved velocities, the orientation to first order, normalised
-    parallelFor(count, m_context.threads, [&](std::size_t i) {
+    forEachBody([&](std::size_t i) {
         SoftBody& b = bodies[i];
         b.deltaPosition += h * b.linearVelocity;
         const Quat spin(0.0, b.angularVelocity.x, b.angularVelocity.y, b.angularVelocity.z);
@@ -191,7 +198,7 @@ void SoftStep::bookWorkAndGravity(Real h, bool bookWork)
 {
     const std::size_t count = m_island.bodies.size();
     m_buffers.kinetic.resize(count);
-    parallelFor(count, m_context.threads, [&](std::size_t i) {
+    forEachBody([&](std::size_t i) {
         SoftBody& soft = m_buffers.bodies[i];
         if (bookWork) {
             m_buffers.bodyWork[i] += kineticEnergyWith(m_buffers.frames[i], soft.linearVelocity,
@@ -230,7 +237,7 @@ void SoftStep::finish()
     }
     const std::vector<ContactWork> work =
         shareIslandWork(total, m_buffers.bodyWork, m_buffers.kineticStart, inverse);
-    parallelFor(count, m_context.threads, [&](std::size_t i) {
+    forEachBody([&](std::size_t i) {
         Body& b = body(i);
         const SoftBody& soft = m_buffers.bodies[i];
         b.position = m_buffers.centres[i] + soft.deltaPosition;
