@@ -166,12 +166,20 @@ void World::advanceCoupledIslands(detail::StepScratch& scratch, Real dt)
         updateIslandRest(island.bodies, m_slots, used, dt, events);
     };
     // (11.5c): a large island takes all the threads inside its step, one island after the
-    // other; the small ones share the threads between them, each on one. An island writes only
+    // other; the small ones share the threads between them, each on one. An island is large if
+    // it has more than a thread's share of the pairs: islands of a thread's share or less keep
+    // the threads as busy side by side, without meeting inside a step. An island writes only
     // its own bodies and its result does not depend on the threads it gets, so neither the
     // split nor the order changes anything.
+    std::size_t allPairs = 0;
+    for (const CoupledIsland& island : scratch.islands) {
+        allPairs += island.pairs.size();
+    }
+    const auto threadShare = allPairs / static_cast<std::size_t>(std::max(context.threads, 1));
     scratch.smallIslands.clear();
     for (std::uint32_t k = 0; k < scratch.islands.size(); ++k) {
-        if (scratch.islands[k].pairs.size() >= detail::kLargeIslandPairs && context.threads > 1) {
+        const std::size_t pairs = scratch.islands[k].pairs.size();
+        if (pairs >= detail::kLargeIslandPairs && pairs > threadShare && context.threads > 1) {
             advance(k, context);
         } else {
             scratch.smallIslands.push_back(k);
