@@ -65,6 +65,7 @@ double referenceNs(const std::vector<BenchRow>& rows, std::size_t first, bool sl
     return reference.value_or(0.0);
 }
 
+#ifdef TUMBLE_HAS_PEERS
 /// referenceNs at `threads` threads: tumble's row at that count among rows[first..], else the
 /// one-thread reference.
 double referenceNsAt(const std::vector<BenchRow>& rows, std::size_t first, bool sleep,
@@ -78,6 +79,7 @@ double referenceNsAt(const std::vector<BenchRow>& rows, std::size_t first, bool 
     }
     return referenceNs(rows, first, sleep);
 }
+#endif
 
 /// The peers' rows of a scene appended to `rows`, each with its ratio to tumble's row
 /// (sleeping as `sleep` says) at the peer row's thread count. Without the peers built in,
