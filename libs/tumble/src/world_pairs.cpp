@@ -92,41 +92,7 @@ void World::findPairs(detail::StepScratch& scratch, Real dt)
                                        : 0.0;
         });
     }
-    const auto testPair = [&](std::size_t k) { testBroadPair(scratch, k, dt); };
-    const int threads = pairs.size() >= detail::kLargeIslandPairs ? threadCount() : 1;
-    if (threads > 1) {
-        // a pair writes the geometry its dynamic body keeps (9.11): each body's pairs go to
-        // one thread, in their order (11.5c)
-        scratch.pairOwners.resize(pairs.size());
-        for (std::size_t k = 0; k < pairs.size(); ++k) {
-            const std::uint32_t a = scratch.proxies[pairs[k].a].body;
-            const std::uint32_t b = scratch.proxies[pairs[k].b].body;
-            scratch.pairOwners[k] = pairGeometryOwner(m_slots, std::min(a, b), std::max(a, b));
-        }
-        scratch.pairGroups.build(scratch.pairOwners, m_slots.size());
-        const OwnerGroups& groups = scratch.pairGroups;
-        parallelForBalanced(groups.count(), threads, kPairOwnersPerChunk, [&](std::size_t g) {
-            if (g + 1 < groups.count() && !groups.group(g + 1).empty()) {
-                m_slots[scratch.pairOwners[groups.group(g + 1).front()]].pairGeometry.prefetch();
-            }
-            for (const std::uint32_t k : groups.group(g)) {
-                testPair(k);
-            }
-        });
-    } else {
-        // the pairs come sorted by their lower slot: a body's kept geometry is asked for ahead
-        // of its first pair
-        const auto lowerOf = [&](std::size_t k) {
-            return std::min(scratch.proxies[pairs[k].a].body, scratch.proxies[pairs[k].b].body);
-        };
-        for (std::size_t k = 0; k < pairs.size(); ++k) {
-            const std::size_t ahead = k + kPairsPrefetchedAhead;
-            if (ahead < pairs.size() && lowerOf(ahead) != lowerOf(ahead - 1)) {
-                m_slots[lowerOf(ahead)].pairGeometry.prefetch();
-            }
-            testPair(k);
-        }
-    }
+    testBroadPairs(scratch, dt);
     scratch.links.clear();
     scratch.linkPairs.clear();
     for (std::size_t k = 0; k < pairs.size(); ++k) {
@@ -145,6 +111,74 @@ void World::findPairs(detail::StepScratch& scratch, Real dt)
     });
 }
 
+void World::testBroadPairs(detail::StepScratch& scratch, Real dt)
+{
+    const std::span<const ProxyPair> pairs = scratch.broadPhase.pairs();
+    // (12.5b): a pair of a kept island is answered by a look-up, cheaper here than the start
+    // of a parallel loop and the lines it would send to another core; the pairs left carry or
+    // search geometry
+    scratch.pairsTested.clear();
+    for (std::uint32_t k = 0; k < pairs.size(); ++k) {
+        if (!answerFromKeptIsland(scratch, k)) {
+            scratch.pairsTested.push_back(k);
+        }
+    }
+    const std::span<const std::uint32_t> tested = scratch.pairsTested;
+    const auto lowerOf = [&](std::size_t k) {
+        return std::min(scratch.proxies[pairs[k].a].body, scratch.proxies[pairs[k].b].body);
+    };
+    if (tested.size() < detail::kLargeIslandPairs || threadCount() == 1) {
+        // the pairs come sorted by their lower slot: a body's kept geometry is asked for ahead
+        // of its first pair
+        for (std::size_t i = 0; i < tested.size(); ++i) {
+            const std::size_t ahead = i + kPairsPrefetchedAhead;
+            if (ahead < tested.size() && lowerOf(tested[ahead]) != lowerOf(tested[ahead - 1])) {
+                m_slots[lowerOf(tested[ahead])].pairGeometry.prefetch();
+            }
+            testBroadPair(scratch, tested[i], dt);
+        }
+        return;
+    }
+    // a pair writes the geometry its dynamic body keeps (9.11): each body's pairs go to one
+    // thread, in their order (11.5c)
+    scratch.pairOwners.resize(tested.size());
+    for (std::size_t i = 0; i < tested.size(); ++i) {
+        const std::uint32_t a = scratch.proxies[pairs[tested[i]].a].body;
+        const std::uint32_t b = scratch.proxies[pairs[tested[i]].b].body;
+        scratch.pairOwners[i] = pairGeometryOwner(m_slots, std::min(a, b), std::max(a, b));
+    }
+    scratch.pairGroups.build(scratch.pairOwners, m_slots.size());
+    const OwnerGroups& groups = scratch.pairGroups;
+    parallelForBalanced(groups.count(), threadCount(), kPairOwnersPerChunk, [&](std::size_t g) {
+        if (g + 1 < groups.count() && !groups.group(g + 1).empty()) {
+            m_slots[scratch.pairOwners[groups.group(g + 1).front()]].pairGeometry.prefetch();
+        }
+        for (const std::uint32_t i : groups.group(g)) {
+            testBroadPair(scratch, tested[i], dt);
+        }
+    });
+}
+
+bool World::answerFromKeptIsland(detail::StepScratch& scratch, std::size_t k) const
+{
+    const ProxyPair& pair = scratch.broadPhase.pairs()[k];
+    const std::uint32_t a = scratch.proxies[pair.a].body;
+    const std::uint32_t b = scratch.proxies[pair.b].body;
+    const std::optional<bool> kept = keptSoftTouch(scratch, std::min(a, b), std::max(a, b));
+    if (!kept) {
+        return false;
+    }
+    // its island's step reads no points of it, unless a body joins the island
+    // (findKeptPairPoints)
+    scratch.pairFromKept[k] = 1;
+    scratch.pairTouches[k] = *kept ? 1 : 0;
+    if (!scratch.pairManifolds.empty()) {
+        scratch.pairManifolds[k].pointCount = 0;
+        scratch.pairHasPoints[k] = 0;
+    }
+    return true;
+}
+
 void World::testBroadPair(detail::StepScratch& scratch, std::size_t k, Real dt)
 {
     const ProxyPair& pair = scratch.broadPhase.pairs()[k];
@@ -158,17 +192,6 @@ void World::testBroadPair(detail::StepScratch& scratch, std::size_t k, Real dt)
         return scratch.reach.empty() ? reachOver(m_slots[slot].body, m_settings.gravity, dt)
                                      : scratch.reach[slot];
     };
-    if (const std::optional<bool> kept = keptSoftTouch(scratch, lower, upper)) {
-        // (12.5b): its island's step reads no points of it, unless a body joins the island
-        // (findKeptPairPoints)
-        scratch.pairFromKept[k] = 1;
-        scratch.pairTouches[k] = *kept ? 1 : 0;
-        if (!scratch.pairManifolds.empty()) {
-            scratch.pairManifolds[k].pointCount = 0;
-            scratch.pairHasPoints[k] = 0;
-        }
-        return;
-    }
     const Real reachLower = reachOf(lower);
     const Real reachUpper = reachOf(upper);
     const Real tolerance = m_settings.contactTolerance;

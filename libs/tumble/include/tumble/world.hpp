@@ -125,7 +125,12 @@ private:
     void editBody(BodyId id, Change change);
     [[nodiscard]] StepContext stepContext() const;
     void findPairs(detail::StepScratch& scratch, Real dt);
-    /// The touch test (10.4) of the broad phase's pair k, answered for a resting pair (10.4b).
+    /// The touch test (10.4) of each of the broad phase's pairs.
+    void testBroadPairs(detail::StepScratch& scratch, Real dt);
+    /// (12.5b): answers the broad phase's pair k from its kept island, if it has one.
+    bool answerFromKeptIsland(detail::StepScratch& scratch, std::size_t k) const;
+    /// The touch test (10.4) of the broad phase's pair k, not of a kept island, answered for a
+    /// resting pair (10.4b).
     void testBroadPair(detail::StepScratch& scratch, std::size_t k, Real dt);
     /// (12.5b): marks the bodies of the kept soft islands that stayed put (keptLeader).
     void markKeptSoftIslands(detail::StepScratch& scratch) const;

@@ -29,9 +29,11 @@ struct StepScratch {
     /// empty.
     std::vector<Real> reach;
     BroadPhase broadPhase;
-    /// Whether each of the broad phase's pairs may touch within the step (10.4), and the body
-    /// whose kept geometry it writes, grouped for the threads (11.5c).
+    /// Whether each of the broad phase's pairs may touch within the step (10.4).
     std::vector<std::uint8_t> pairTouches;
+    /// The pairs not answered by a kept island (12.5b), which the touch test tests; and for
+    /// each of them the body whose kept geometry it writes, grouped for the threads (11.5c).
+    std::vector<std::uint32_t> pairsTested;
     std::vector<std::uint32_t> pairOwners;
     OwnerGroups pairGroups;
     /// With the soft step, each pair's points within the narrow phase's margin (mayTouch).
