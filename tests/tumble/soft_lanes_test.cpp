@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cstdint>
 #include <random>
@@ -232,6 +233,47 @@ TEST(SoftLanes, LargeColoursOnTwoThreadsGiveTheSameBits)
     ASSERT_GE(island.colours.offsets[1] - island.colours.offsets[0], kThreadedColourManifolds);
     SoftLanes lanes;
     expectLanesGiveTheBitsOfOneAtATime(island, 2, lanes);
+}
+
+TEST(SoftLanes, EachBlocksWorkIsItsManifoldsWorkInOrderAndThePushedAreMarked)
+{
+    // SoftLanes::work: a block's normal work adds its lanes' points in order, its friction work
+    // its lanes' in order, bit for bit as from the manifolds' results; a manifold pushed if one
+    // of its points' impulses is positive
+    RandomSoftIsland island(17, 700, 1500);
+    SoftLanes lanes;
+    const std::vector<SoftContactResult> results = runPasses(island, 2, &lanes);
+    std::vector<SoftBlockWork> blockWork;
+    std::vector<std::uint8_t> pushed(results.size(), 2);
+    lanes.work(blockWork, pushed, 2);
+    const std::vector<std::uint32_t>& offsets = island.colours.offsets;
+    const std::size_t lanesOfABlock = SoftLanes::manifoldsPerBlock();
+    std::size_t block = 0;
+    int pushing = 0;
+    int idle = 0;
+    // every group but the last (the overflow) is a colour of blocks of lanesOfABlock manifolds
+    for (std::size_t c = 0; c + 2 < offsets.size(); ++c) {
+        for (std::size_t first = offsets[c]; first < offsets[c + 1]; first += lanesOfABlock, ++block) {
+            SoftBlockWork expected;
+            for (std::size_t m = first; m < std::min<std::size_t>(first + lanesOfABlock, offsets[c + 1]);
+                 ++m) {
+                bool pushes = false;
+                for (int k = 0; k < results[m].pointCount; ++k) {
+                    expected.normal += results[m].normalWork[k];
+                    pushes = pushes || results[m].normalImpulses[k] > 0.0;
+                }
+                expected.friction += results[m].frictionWork;
+                EXPECT_EQ(pushed[m], pushes ? 1 : 0);
+                (pushes ? pushing : idle) += 1;
+            }
+            ASSERT_LT(block, blockWork.size());
+            expectSameBits(blockWork[block].normal, expected.normal);
+            expectSameBits(blockWork[block].friction, expected.friction);
+        }
+    }
+    EXPECT_EQ(block, blockWork.size());
+    EXPECT_GT(pushing, 0);
+    EXPECT_GT(idle, 0);
 }
 
 TEST(SoftLanes, AnOverflowGroupAfterTheLanesGivesTheSameBits)

@@ -121,6 +121,29 @@ void SoftLanes::results(std::span<SoftContactResult> results, int threads) const
     });
 }
 
+void SoftLanes::work(std::vector<SoftBlockWork>& blockWork, std::span<std::uint8_t> pushed,
+                     int threads) const
+{
+    const Storage& storage = *m_storage;
+    blockWork.resize(storage.blocks.size());
+    forEachBlockShare(storage, threads, [&](std::size_t first, std::size_t last) {
+        for (std::size_t b = first; b < last; ++b) {
+            const LaneBlock& block = storage.blocks[b];
+            SoftBlockWork& work = blockWork[b];
+            work = SoftBlockWork{};
+            for (std::uint32_t lane = 0; lane < block.lanes; ++lane) {
+                bool pushes = false;
+                for (int k = 0; k < pointsOf(block, lane); ++k) {
+                    work.normal += block.points[k].normalWork[lane];
+                    pushes = pushes || block.points[k].normalImpulse[lane] > 0.0;
+                }
+                work.friction += block.frictionWork[lane];
+                pushed[block.manifold[lane]] = pushes ? 1 : 0;
+            }
+        }
+    });
+}
+
 void SoftLanes::unpack(std::span<SoftManifold> manifolds, int threads) const
 {
     const Storage& storage = *m_storage;

@@ -202,6 +202,11 @@ SoftLanes& SoftLanes::operator=(const SoftLanes& other)
     return *this;
 }
 
+std::size_t SoftLanes::manifoldsPerBlock()
+{
+    return kLanes;
+}
+
 void SoftLanes::restart(std::span<const SoftBody> bodies,
                         std::span<const std::pair<Real, Real>> frictions, int threads)
 {

@@ -7,12 +7,20 @@
 #include "dynamics/soft_contact_solver.hpp"
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <span>
 #include <utility>
+#include <vector>
 
 namespace tumble {
+
+/// The normal and friction work of one block's manifolds over a step, J.
+struct SoftBlockWork {
+    Real normal = 0.0;
+    Real friction = 0.0;
+};
 
 /// The colours of a soft island (not the overflow group) packed kLanes manifolds to a block, each
 /// block lane by lane in memory (structure of arrays).
@@ -23,6 +31,9 @@ public:
     /// A copy holds its own blocks (a World copied keeps its islands' kept lanes, (12.5b)).
     SoftLanes(const SoftLanes& other);
     SoftLanes& operator=(const SoftLanes& other);
+
+    /// The manifolds of one block: kLanes of the library's build (vector_lanes.hpp).
+    static std::size_t manifoldsPerBlock();
 
     /// The manifold of a contact, by its index in colour order.
     using ManifoldSource = std::function<SoftManifold(std::size_t)>;
@@ -65,6 +76,13 @@ public:
 
     /// softResultOf for each manifold packed, into its index in `results`.
     void results(std::span<SoftContactResult> results, int threads) const;
+
+    /// The work of each block's impulses, into `blockWork` (an entry a block, in the blocks'
+    /// order): its lanes in order, each lane's points' normal work then its friction work; and
+    /// 1 in `pushed`, at its index in colour order, for each manifold a point of which pushes.
+    /// The blocks are spread over `threads`, each on the thread that sweeps it.
+    void work(std::vector<SoftBlockWork>& blockWork, std::span<std::uint8_t> pushed,
+              int threads) const;
 
 private:
     struct Storage;

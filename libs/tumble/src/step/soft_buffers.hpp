@@ -24,7 +24,13 @@ struct SoftBuffers {
     /// The manifolds of the overflow group from its first, or of every contact of an island
     /// not in lanes.
     std::vector<SoftManifold> manifolds;
+    /// softResultOf of each manifold, in colour order, gathered for the warm-start store
+    /// (collectSoftResults).
     std::vector<SoftContactResult> results;
+    /// With lanes, the work of each block (SoftLanes::work); and 1 for each manifold, in
+    /// colour order, a point of which pushed in the last sub-step.
+    std::vector<SoftBlockWork> blockWork;
+    std::vector<std::uint8_t> pushed;
     SoftContactOrder order;
     /// Each manifold's static and kinetic friction coefficients, in colour order.
     std::vector<std::pair<Real, Real>> frictions;
@@ -47,6 +53,9 @@ struct SoftBuffers {
     std::vector<Real> bodyWork;
     std::vector<Real> kinetic;
     std::vector<SolverBody> inverseMasses;
+    /// Whether a point of the body's pushed in the last sub-step (7.1), gathered from the
+    /// contacts before the bodies' pass writes it to their slots.
+    std::vector<std::uint8_t> touching;
 };
 
 } // namespace tumble

@@ -96,4 +96,16 @@ std::size_t firstUnpackedManifold(const SoftBuffers& buffers)
     return buffers.inLanes && offsets.size() >= 2 ? offsets[offsets.size() - 2] : 0;
 }
 
+void collectSoftResults(SoftBuffers& buffers, int threads)
+{
+    buffers.results.resize(buffers.contacts.size());
+    if (buffers.inLanes) {
+        buffers.lanes.results(buffers.results, threads);
+    }
+    const std::size_t first = firstUnpackedManifold(buffers);
+    for (std::size_t i = 0; i < buffers.manifolds.size(); ++i) {
+        buffers.results[first + i] = softResultOf(buffers.manifolds[i]);
+    }
+}
+
 } // namespace tumble

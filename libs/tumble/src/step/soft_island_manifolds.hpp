@@ -26,4 +26,8 @@ void restartSoftManifolds(SoftBuffers& buffers, int threads);
 /// The first manifold, in colour order, that is not packed in lanes: the overflow group's, or 0.
 std::size_t firstUnpackedManifold(const SoftBuffers& buffers);
 
+/// Fills `buffers.results` (softResultOf of each manifold, in colour order) from the lanes and
+/// the manifolds not packed, for the warm-start store (12.5).
+void collectSoftResults(SoftBuffers& buffers, int threads);
+
 } // namespace tumble

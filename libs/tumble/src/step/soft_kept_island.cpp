@@ -1,10 +1,13 @@
 // A soft island's manifolds kept while its bodies stay put (12.5b).
 #include "step/soft_kept_island.hpp"
 
+#include "step/soft_island_manifolds.hpp"
+
 #include "body_slot.hpp"
 #include "parallel_for.hpp"
 #include "step/coupled_step.hpp"
 #include "step/soft_buffers.hpp"
+#include "step/soft_island_manifolds.hpp"
 #include "step/soft_warm_start.hpp"
 
 #include <algorithm>
@@ -75,7 +78,9 @@ void storeKeptSoftIsland(SoftKeptIsland& kept, std::span<BodySlot> slots, int th
     }
     CoupledIsland island;
     island.bodies = kept.bodies;
-    const SoftBuffers& built = *kept.buffers;
+    // the kept steps leave their impulses in the lanes (SoftStep::gatherWork)
+    SoftBuffers& built = *kept.buffers;
+    collectSoftResults(built, threads);
     storeSoftWarmStart(island, slots, built.contacts, built.results, built.order.colourPosition,
                        threads, built.centres, built.startOrientations);
     kept.unstored = false;

@@ -51,7 +51,10 @@ private:
     /// Each body's start of the step; a kept island's bodies start where they moved to since
     /// its manifolds were built (12.5b).
     void startBodies();
-    void collectResults();
+    /// The work of the island's impulses over the step, in a fixed order (the lanes' blocks,
+    /// then the manifolds not packed), and in `m_buffers.touching` each body one of whose
+    /// points pushed in the last sub-step (7.1).
+    IslandWork gatherWork();
     /// One sub-step; `bookLast` when a sub-step went before it (its work is booked here).
     void substep(Real h, const SoftSolveSettings& solve, bool bookLast);
     void finish();
@@ -100,7 +103,6 @@ void SoftStep::run(Real dt)
                   m_buffers.inLanes ? &m_buffers.lanes : nullptr);
     // restitution's work
     bookWorkAndGravity(0.0, true);
-    collectResults();
     finish();
     ++m_events.statistics.islands;
     m_events.statistics.bodies += m_island.bodies.size();
@@ -111,14 +113,6 @@ void SoftStep::run(Real dt)
 
 void SoftStep::prepare(Real dt)
 {
-    // the exact step's kept constraints do not survive a soft step, nor does what the island's
-    // other bodies kept of islands they led
-    for (const std::uint32_t index : m_island.bodies) {
-        m_slots[index].kept.release();
-        if (index != m_island.bodies.front()) {
-            m_slots[index].softKept.release();
-        }
-    }
     startBodies();
     if (m_kept) {
         restartSoftManifolds(m_buffers, m_context.threads);
@@ -143,7 +137,14 @@ void SoftStep::startBodies()
     m_buffers.startOrientations.resize(count);
     // each body writes only its own entries
     forEachBody([&](std::size_t i) {
-        const Body& b = body(i);
+        // the exact step's kept constraints do not survive a soft step, nor does what the
+        // island's other bodies kept of islands they led
+        BodySlot& slot = m_slots[m_island.bodies[i]];
+        slot.kept.release();
+        if (i != 0) {
+            slot.softKept.release();
+        }
+        const Body& b = slot.body;
         m_buffers.energies[i] = energyOf(b, m_settings.gravity);
         m_buffers.kineticStart[i] = b.kineticEnergy();
         SoftBody& soft = m_buffers.bodies[i];
@@ -162,16 +163,43 @@ void SoftStep::startBodies()
     });
 }
 
-void SoftStep::collectResults()
+IslandWork SoftStep::gatherWork()
 {
-    m_buffers.results.resize(m_buffers.contacts.size());
+    const std::size_t count = m_island.bodies.size();
+    m_buffers.pushed.assign(m_buffers.contacts.size(), 0);
+    IslandWork total;
     if (m_buffers.inLanes) {
-        m_buffers.lanes.results(m_buffers.results, m_context.threads);
+        m_buffers.lanes.work(m_buffers.blockWork, m_buffers.pushed, m_context.threads);
+        for (const SoftBlockWork& block : m_buffers.blockWork) {
+            total.normal += block.normal;
+            total.friction += block.friction;
+        }
     }
     const std::size_t first = firstUnpackedManifold(m_buffers);
     for (std::size_t i = 0; i < m_buffers.manifolds.size(); ++i) {
-        m_buffers.results[first + i] = softResultOf(m_buffers.manifolds[i]);
+        const SoftManifold& manifold = m_buffers.manifolds[i];
+        bool pushes = false;
+        for (int k = 0; k < manifold.pointCount; ++k) {
+            total.normal += manifold.points[k].normalWork;
+            pushes = pushes || manifold.points[k].normalImpulse > 0.0;
+        }
+        total.friction += manifold.frictionWork;
+        m_buffers.pushed[first + i] = pushes ? 1 : 0;
     }
+    // gathered here, so that each body's slot is written by the thread that finishes the body
+    m_buffers.touching.assign(count, 0);
+    for (std::size_t c = 0; c < m_buffers.pushed.size(); ++c) {
+        if (m_buffers.pushed[c] == 0) {
+            continue;
+        }
+        const ProxyPair& ends = m_buffers.order.colourEnds[c];
+        for (const std::uint32_t side : {ends.a, ends.b}) {
+            if (side < count) {
+                m_buffers.touching[side] = 1;
+            }
+        }
+    }
+    return total;
 }
 
 void SoftStep::substep(Real h, const SoftSolveSettings& solve, bool bookLast)
@@ -219,17 +247,12 @@ void SoftStep::finish()
     // (12.5): the last sub-step's impulses start the next step's sub-steps; a kept island's
     // stay in its lanes, and go to the caches only when its manifolds are built again (12.5b)
     if (!m_kept) {
+        collectSoftResults(m_buffers, m_context.threads);
         storeSoftWarmStart(m_island, m_slots, m_buffers.contacts, m_buffers.results,
                            m_buffers.order.colourPosition, m_context.threads, m_buffers.centres,
                            m_buffers.startOrientations);
     }
-    IslandWork total;
-    for (const SoftContactResult& result : m_buffers.results) {
-        for (int k = 0; k < result.pointCount; ++k) {
-            total.normal += result.normalWork[k];
-        }
-        total.friction += result.frictionWork;
-    }
+    const IslandWork total = gatherWork();
     std::vector<SolverBody>& inverse = m_buffers.inverseMasses;
     inverse.resize(count);
     for (std::size_t i = 0; i < count; ++i) {
@@ -246,25 +269,8 @@ void SoftStep::finish()
         b.angularVelocity = soft.angularVelocity;
         refreshWorldInertia(b);
         bookContact(b, work[i], energyOf(b, m_settings.gravity) - m_buffers.energies[i], false);
-        m_slots[m_island.bodies[i]].touchingGround = false;
+        m_slots[m_island.bodies[i]].touchingGround = m_buffers.touching[i] != 0;
     });
-    // a body touches when one of its points pushed in the last sub-step (7.1)
-    for (std::size_t c = 0; c < m_buffers.results.size(); ++c) {
-        const SoftContactResult& result = m_buffers.results[c];
-        const bool pushed =
-            std::any_of(result.normalImpulses.begin(),
-                        result.normalImpulses.begin() + result.pointCount,
-                        [](Real impulse) { return impulse > 0.0; });
-        if (!pushed) {
-            continue;
-        }
-        const ProxyPair& ends = m_buffers.order.colourEnds[c];
-        for (const std::uint32_t side : {ends.a, ends.b}) {
-            if (side < count) {
-                m_slots[m_island.bodies[side]].touchingGround = true;
-            }
-        }
-    }
 }
 
 } // namespace
