@@ -5,9 +5,9 @@
 #include <atomic>
 #include <cstddef>
 
-#ifdef TUMBLE_HAVE_OPENMP
 #include "spin_barrier.hpp"
 
+#ifdef TUMBLE_HAVE_OPENMP
 #include <omp.h>
 #endif
 
@@ -53,6 +53,55 @@ void parallelForBalanced(std::size_t count, int threads, std::size_t chunk, cons
     });
 }
 
+/// One thread of a team running in one parallel region (parallelTeam): its index among the
+/// team's threads, and the barrier they meet at.
+class PhaseTeam {
+public:
+    PhaseTeam(std::size_t share, std::size_t shares, SpinBarrier* barrier)
+        : m_share(share), m_shares(shares), m_barrier(barrier)
+    {
+    }
+
+    [[nodiscard]] std::size_t share() const { return m_share; }
+    [[nodiscard]] std::size_t shares() const { return m_shares; }
+    /// Returns when every thread of the team has called it (at once with one thread): what
+    /// the team wrote before is then read by any of them.
+    void sync() const
+    {
+        if (m_barrier != nullptr) {
+            m_barrier->wait();
+        }
+    }
+
+private:
+    std::size_t m_share;
+    std::size_t m_shares;
+    SpinBarrier* m_barrier;
+};
+
+/// Calls `body(team)` on each of `threads` threads in one parallel region, each with its
+/// PhaseTeam; with one thread, once with a team of one. The body's phases meet at team.sync(),
+/// which costs a counter's round trip between the cores where starting a region costs several
+/// (11.5c).
+template <typename Body>
+void parallelTeam([[maybe_unused]] int threads, const Body& body)
+{
+#ifdef TUMBLE_HAVE_OPENMP
+    if (threads > 1) {
+        SpinBarrier barrier;
+#pragma omp parallel num_threads(threads)
+        {
+            const auto share = static_cast<std::size_t>(omp_get_thread_num());
+            const auto shares = static_cast<std::size_t>(omp_get_num_threads());
+            barrier.setThreads(static_cast<int>(shares));
+            body(PhaseTeam(share, shares, shares > 1 ? &barrier : nullptr));
+        }
+        return;
+    }
+#endif
+    body(PhaseTeam(0, 1, nullptr));
+}
+
 /// Calls `body(phase, share, shares)` for each phase in [0, phases), in order, on each of
 /// `threads` threads (`share` the thread's index among the `shares` that run), every thread
 /// ending a phase before any begins the next: one parallel region for all the phases and a
@@ -60,30 +109,20 @@ void parallelForBalanced(std::size_t count, int threads, std::size_t chunk, cons
 /// With one thread, body(phase, 0, 1) for each phase. What a phase writes must not depend on
 /// how its work is shared for the result to be the same for any number of threads (11.5c).
 template <typename Body>
-void parallelPhases(std::size_t phases, [[maybe_unused]] int threads, const Body& body)
+void parallelPhases(std::size_t phases, int threads, const Body& body)
 {
-#ifdef TUMBLE_HAVE_OPENMP
-    if (threads > 1 && phases > 0) {
-        SpinBarrier barrier;
-#pragma omp parallel num_threads(threads)
-        {
-            const auto share = static_cast<std::size_t>(omp_get_thread_num());
-            const auto shares = static_cast<std::size_t>(omp_get_num_threads());
-            barrier.setThreads(static_cast<int>(shares));
-            for (std::size_t phase = 0; phase < phases; ++phase) {
-                body(phase, share, shares);
-                // the region's end waits for every thread after the last phase
-                if (phase + 1 < phases) {
-                    barrier.wait();
-                }
-            }
-        }
+    if (phases == 0) {
         return;
     }
-#endif
-    for (std::size_t phase = 0; phase < phases; ++phase) {
-        body(phase, std::size_t{0}, std::size_t{1});
-    }
+    parallelTeam(threads, [&](const PhaseTeam& team) {
+        for (std::size_t phase = 0; phase < phases; ++phase) {
+            body(phase, team.share(), team.shares());
+            // the region's end waits for every thread after the last phase
+            if (phase + 1 < phases) {
+                team.sync();
+            }
+        }
+    });
 }
 
 /// parallelFor with the iterations in two fixed shares: [0, split) on the first thread and

@@ -17,6 +17,7 @@ namespace tumble {
 void World::markKeptSoftIslands(detail::StepScratch& scratch) const
 {
     scratch.keptLeader.assign(m_slots.size(), detail::kNotKept);
+    scratch.keptBodies = 0;
     if (m_settings.solver != ContactSolver::Soft) {
         return;
     }
@@ -29,6 +30,7 @@ void World::markKeptSoftIslands(detail::StepScratch& scratch) const
             !softBodiesStill(*kept.buffers, kept.bodies, m_slots, threadCount())) {
             continue;
         }
+        scratch.keptBodies += kept.bodies.size();
         for (const std::uint32_t body : kept.bodies) {
             scratch.keptLeader[body] = index;
             scratch.keptPairsFirst[body] = 0;

@@ -103,8 +103,11 @@ void World::findPairs(detail::StepScratch& scratch, Real dt)
         }
     }
     // (9.11): kept geometry nobody asked for since the last broad phase is of a pair gone,
-    // unless its owner's pairs were answered by its kept island (12.5b)
-    parallelFor(m_slots.size(), slotThreads, [&](std::size_t index) {
+    // unless its owner's pairs were answered by its kept island (12.5b); the slots left are
+    // shared over the threads only when a large world's are
+    const std::size_t forgetting = m_slots.size() - scratch.keptBodies;
+    const int forgetThreads = forgetting >= kLargeWorldSlots ? slotThreads : 1;
+    parallelFor(forgetting > 0 ? m_slots.size() : 0, forgetThreads, [&](std::size_t index) {
         if (scratch.keptLeader[index] == detail::kNotKept) {
             m_slots[index].pairGeometry.forgetUnasked();
         }

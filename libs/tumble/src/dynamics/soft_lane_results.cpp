@@ -111,6 +111,14 @@ void SoftLanes::restitute(std::span<SoftBody> bodies, Real threshold, int thread
     });
 }
 
+void SoftLanes::restitute(std::span<SoftBody> bodies, Real threshold, const PhaseTeam& team)
+{
+    Storage& storage = *m_storage;
+    forEachColour(storage, team, [&](std::size_t first, std::size_t last) {
+        restituteBlocks({storage.blocks.data() + first, last - first}, bodies, threshold);
+    });
+}
+
 void SoftLanes::results(std::span<SoftContactResult> results, int threads) const
 {
     const Storage& storage = *m_storage;

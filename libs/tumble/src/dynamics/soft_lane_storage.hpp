@@ -76,27 +76,43 @@ std::pair<std::size_t, std::size_t> colourShare(const Storage& storage, std::siz
     return {begin + share * blocks / shares, begin + (share + 1) * blocks / shares};
 }
 
-/// Calls `visit(first, last)` over the blocks of every colour, in the colours' order, over
-/// `threads`: first the halves of a split island, a thread each (halfBlocks), then each colour
-/// across the halves, or every colour of an island not split, shared as colourShare says, the
-/// threads meeting after each.
+/// Calls `visit(first, last)` over the blocks of every colour, in the colours' order, on the
+/// team's threads: first the halves of a split island, a thread each (halfBlocks), then each
+/// colour across the halves, or every colour of an island not split, shared as colourShare
+/// says, the threads meeting after each but the last.
 template <typename Storage, typename Visit>
-void forEachColour(const Storage& storage, int threads, const Visit& visit)
+void forEachColour(const Storage& storage, const PhaseTeam& team, const Visit& visit)
 {
     const std::size_t halves = storage.halfColours[0] + storage.halfColours[1];
     const std::size_t colours = storage.colourManifolds.size();
     const std::size_t first = halves > 0 ? 1 : 0;
-    const int used = storage.anyThreadedColour || halves > 0 ? threads : 1;
-    parallelPhases(first + colours - halves, used,
-                   [&](std::size_t phase, std::size_t share, std::size_t shares) {
-        const auto [begin, end] = phase < first
-                                      ? halfBlocks(storage, share, shares)
-                                      : colourShare(storage, halves + phase - first, share,
-                                                    shares);
+    const std::size_t phases = first + colours - halves;
+    for (std::size_t phase = 0; phase < phases; ++phase) {
+        const auto [begin, end] =
+            phase < first ? halfBlocks(storage, team.share(), team.shares())
+                          : colourShare(storage, halves + phase - first, team.share(),
+                                        team.shares());
         if (begin < end) {
             visit(begin, end);
         }
-    });
+        if (phase + 1 < phases) {
+            team.sync();
+        }
+    }
+}
+
+/// The same in a region of its own over `threads`, or on the calling thread alone when no
+/// colour is large enough to share and the island is not split.
+template <typename Storage, typename Visit>
+void forEachColour(const Storage& storage, int threads, const Visit& visit)
+{
+    const std::size_t halves = storage.halfColours[0] + storage.halfColours[1];
+    if (halves == 0 && storage.colourManifolds.empty()) {
+        return;
+    }
+    const bool shared = storage.anyThreadedColour || halves > 0;
+    parallelTeam(shared ? threads : 1,
+                 [&](const PhaseTeam& team) { forEachColour(storage, team, visit); });
 }
 
 /// Calls `visit(first, last)` over every block once, each on the thread forEachColour gives it,

@@ -280,18 +280,45 @@ void SoftLanes::warmStart(std::span<SoftBody> bodies, int threads) const
     });
 }
 
+void SoftLanes::warmStart(std::span<SoftBody> bodies, const PhaseTeam& team) const
+{
+    const Storage& storage = *m_storage;
+    forEachColour(storage, team, [&](std::size_t first, std::size_t last) {
+        warmStartBlocks({storage.blocks.data() + first, last - first}, bodies);
+    });
+}
+
+namespace {
+
+LaneSettings laneSettingsOf(const SoftSolveSettings& settings, bool useBias)
+{
+    const Softness& fixed = settings.staticSoftness;
+    const Softness& moving = settings.dynamicSoftness;
+    return LaneSettings{splat(fixed.biasRate),          splat(fixed.massScale),
+                        splat(fixed.impulseScale),      splat(moving.biasRate),
+                        splat(moving.massScale),        splat(moving.impulseScale),
+                        splat(settings.inverseSubstep), splat(-settings.pushSpeed),
+                        useBias};
+}
+
+} // namespace
+
 void SoftLanes::solve(std::span<SoftBody> bodies, const SoftSolveSettings& settings,
                       bool useBias, int threads)
 {
     Storage& storage = *m_storage;
-    const Softness& fixed = settings.staticSoftness;
-    const Softness& moving = settings.dynamicSoftness;
-    const LaneSettings lanes{splat(fixed.biasRate),        splat(fixed.massScale),
-                             splat(fixed.impulseScale),    splat(moving.biasRate),
-                             splat(moving.massScale),      splat(moving.impulseScale),
-                             splat(settings.inverseSubstep), splat(-settings.pushSpeed),
-                             useBias};
+    const LaneSettings lanes = laneSettingsOf(settings, useBias);
     forEachColour(storage, threads, [&](std::size_t first, std::size_t last) {
+        solveBlocks({storage.blocks.data() + first, last - first}, bodies, lanes);
+    });
+}
+
+void SoftLanes::solve(std::span<SoftBody> bodies, const SoftSolveSettings& settings,
+                      bool useBias, const PhaseTeam& team)
+{
+    Storage& storage = *m_storage;
+    const LaneSettings lanes = laneSettingsOf(settings, useBias);
+    forEachColour(storage, team, [&](std::size_t first, std::size_t last) {
         solveBlocks({storage.blocks.data() + first, last - first}, bodies, lanes);
     });
 }

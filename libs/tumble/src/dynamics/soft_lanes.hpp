@@ -16,6 +16,8 @@
 
 namespace tumble {
 
+class PhaseTeam;
+
 /// The normal and friction work of one block's manifolds over a step, J.
 struct SoftBlockWork {
     Real normal = 0.0;
@@ -67,9 +69,17 @@ public:
     void solve(std::span<SoftBody> bodies, const SoftSolveSettings& settings, bool useBias,
                int threads);
 
+    /// warmStart and solve by the threads of a team already running (parallelTeam), each
+    /// calling them: the colours' phases meet at the team's barrier, and no region is started.
+    void warmStart(std::span<SoftBody> bodies, const PhaseTeam& team) const;
+    void solve(std::span<SoftBody> bodies, const SoftSolveSettings& settings, bool useBias,
+               const PhaseTeam& team);
+
     /// restituteSoft over the colours' manifolds: each lane of elasticity other than zero
     /// through restituteManifold, so the bits are those of the manifold alone.
     void restitute(std::span<SoftBody> bodies, Real threshold, int threads);
+    /// The same by the threads of a team already running, as warmStart and solve.
+    void restitute(std::span<SoftBody> bodies, Real threshold, const PhaseTeam& team);
 
     /// Writes the impulses and work back to the manifolds packed, the blocks over `threads`.
     void unpack(std::span<SoftManifold> manifolds, int threads) const;

@@ -62,6 +62,17 @@ private:
     /// gained since `m_buffers.kinetic` (the passes' work since the last call); then gravity
     /// over h (none for h = 0); then keeps its kinetic energy in `m_buffers.kinetic`.
     void bookWorkAndGravity(Real h, bool bookWork);
+    /// bookWorkAndGravity's work for body i.
+    void bookBody(std::size_t i, Real h, bool bookWork);
+    /// (12.4): body i's position and orientation advanced over h with its solved velocities.
+    void advancePose(std::size_t i, Real h);
+    /// Whether the sub-steps run in one parallel region (substepsInOneTeam): an island split
+    /// in halves (12.9), all of its manifolds in lanes, on several threads.
+    [[nodiscard]] bool substepsInOneTeam() const;
+    /// The sub-steps of substep and the restitution after them, every pass in one parallel
+    /// region, each thread sweeping its half's bodies and colours, the threads meeting at a
+    /// spinning barrier between passes: the same passes in the same order, so the same bits.
+    void substepsInOneTeam(Real h, const SoftSolveSettings& solve, int substeps);
     Body& body(std::size_t local) { return m_slots[m_island.bodies[local]].body; }
     /// visit(i) for each of the island's bodies, each half of a split island on the thread that
     /// sweeps its colours (12.9); each call writes only body i's entries.
@@ -93,16 +104,20 @@ void SoftStep::run(Real dt)
     const SoftSolveSettings solve{makeSoftness(hertz, damping, h),
                                   makeSoftness(2.0 * hertz, 0.5 * damping, h),
                                   1.0 / h, m_settings.softPushSpeed};
-    for (int s = 0; s < substeps; ++s) {
-        substep(h, solve, s > 0);
+    if (substepsInOneTeam()) {
+        substepsInOneTeam(h, solve, substeps);
+    } else {
+        for (int s = 0; s < substeps; ++s) {
+            substep(h, solve, s > 0);
+        }
+        // the last sub-step's work, and the kinetic energies restitution starts from
+        bookWorkAndGravity(0.0, true);
+        restituteSoft(m_buffers.manifolds, m_buffers.bodies, m_settings.restitutionThreshold,
+                      m_buffers.order.colours, m_context.threads,
+                      m_buffers.inLanes ? &m_buffers.lanes : nullptr);
+        // restitution's work
+        bookWorkAndGravity(0.0, true);
     }
-    // the last sub-step's work, and the kinetic energies restitution starts from
-    bookWorkAndGravity(0.0, true);
-    restituteSoft(m_buffers.manifolds, m_buffers.bodies, m_settings.restitutionThreshold,
-                  m_buffers.order.colours, m_context.threads,
-                  m_buffers.inLanes ? &m_buffers.lanes : nullptr);
-    // restitution's work
-    bookWorkAndGravity(0.0, true);
     finish();
     ++m_events.statistics.islands;
     m_events.statistics.bodies += m_island.bodies.size();
@@ -212,33 +227,87 @@ void SoftStep::substep(Real h, const SoftSolveSettings& solve, bool bookLast)
     warmStartSoft(m_buffers.manifolds, bodies, colours, threads, lanes);
     solveSoft(m_buffers.manifolds, bodies, solve, true, colours, threads, lanes);
     // (12.4): positions from the solved velocities, the orientation to first order, normalised
-    forEachBody([&](std::size_t i) {
-        SoftBody& b = bodies[i];
-        b.deltaPosition += h * b.linearVelocity;
-        const Quat spin(0.0, b.angularVelocity.x, b.angularVelocity.y, b.angularVelocity.z);
-        b.orientation = glm::normalize(b.orientation + (0.5 * h) * (spin * b.orientation));
-        b.deltaRotation = glm::mat3_cast(b.orientation) * m_buffers.startRotationsT[i];
-    });
+    forEachBody([&](std::size_t i) { advancePose(i, h); });
     solveSoft(m_buffers.manifolds, bodies, solve, false, colours, threads, lanes);
+}
+
+void SoftStep::advancePose(std::size_t i, Real h)
+{
+    SoftBody& b = m_buffers.bodies[i];
+    b.deltaPosition += h * b.linearVelocity;
+    const Quat spin(0.0, b.angularVelocity.x, b.angularVelocity.y, b.angularVelocity.z);
+    b.orientation = glm::normalize(b.orientation + (0.5 * h) * (spin * b.orientation));
+    b.deltaRotation = glm::mat3_cast(b.orientation) * m_buffers.startRotationsT[i];
+}
+
+bool SoftStep::substepsInOneTeam() const
+{
+    const SoftColours& colours = m_buffers.order.colours;
+    return m_context.threads > 1 && m_buffers.inLanes && m_buffers.manifolds.empty() &&
+           colours.halfColours[0] + colours.halfColours[1] > 0 && colours.halfSplit > 0 &&
+           colours.halfSplit < m_island.bodies.size();
+}
+
+void SoftStep::substepsInOneTeam(Real h, const SoftSolveSettings& solve, int substeps)
+{
+    const std::size_t count = m_island.bodies.size();
+    const std::size_t split = m_buffers.order.colours.halfSplit;
+    m_buffers.kinetic.resize(count);
+    std::span<SoftBody> bodies = m_buffers.bodies;
+    SoftLanes& lanes = m_buffers.lanes;
+    parallelTeam(m_context.threads, [&](const PhaseTeam& team) {
+        // each half's bodies on the thread that sweeps its colours, as forEachBody gives them
+        const std::size_t share = team.share();
+        const std::size_t first = share == 0 ? 0 : share == 1 ? split : count;
+        const std::size_t last = share == 0 && team.shares() > 1 ? split : count;
+        for (int s = 0; s < substeps; ++s) {
+            for (std::size_t i = first; i < last; ++i) {
+                bookBody(i, h, s > 0);
+            }
+            team.sync();
+            lanes.warmStart(bodies, team);
+            team.sync();
+            lanes.solve(bodies, solve, true, team);
+            team.sync();
+            for (std::size_t i = first; i < last; ++i) {
+                advancePose(i, h);
+            }
+            team.sync();
+            lanes.solve(bodies, solve, false, team);
+            team.sync();
+        }
+        // the last sub-step's work, restitution (12.6), and its work
+        for (std::size_t i = first; i < last; ++i) {
+            bookBody(i, 0.0, true);
+        }
+        team.sync();
+        lanes.restitute(bodies, m_settings.restitutionThreshold, team);
+        team.sync();
+        for (std::size_t i = first; i < last; ++i) {
+            bookBody(i, 0.0, true);
+        }
+    });
 }
 
 void SoftStep::bookWorkAndGravity(Real h, bool bookWork)
 {
-    const std::size_t count = m_island.bodies.size();
-    m_buffers.kinetic.resize(count);
-    forEachBody([&](std::size_t i) {
-        SoftBody& soft = m_buffers.bodies[i];
-        if (bookWork) {
-            m_buffers.bodyWork[i] += kineticEnergyWith(m_buffers.frames[i], soft.linearVelocity,
-                                                       soft.angularVelocity) -
-                                     m_buffers.kinetic[i];
-        }
-        if (h > 0.0) {
-            soft.linearVelocity += m_settings.gravity * h;
-        }
-        m_buffers.kinetic[i] =
-            kineticEnergyWith(m_buffers.frames[i], soft.linearVelocity, soft.angularVelocity);
-    });
+    m_buffers.kinetic.resize(m_island.bodies.size());
+    forEachBody([&](std::size_t i) { bookBody(i, h, bookWork); });
+}
+
+void SoftStep::bookBody(std::size_t i, Real h, bool bookWork)
+{
+    SoftBody& soft = m_buffers.bodies[i];
+    if (bookWork) {
+        m_buffers.bodyWork[i] += kineticEnergyWith(m_buffers.frames[i], soft.linearVelocity,
+                                                   soft.angularVelocity) -
+                                 m_buffers.kinetic[i];
+    }
+    if (h > 0.0) {
+        soft.linearVelocity += m_settings.gravity * h;
+    }
+    m_buffers.kinetic[i] =
+        kineticEnergyWith(m_buffers.frames[i], soft.linearVelocity, soft.angularVelocity);
 }
 
 void SoftStep::finish()

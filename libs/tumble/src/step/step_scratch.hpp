@@ -46,6 +46,8 @@ struct StepScratch {
     /// Each slot's kept soft island whose bodies all stayed put (its lowest body's slot), or
     /// kNotKept; and 1 for a pair answered from that island's pairs rather than tested (12.5b).
     std::vector<std::uint32_t> keptLeader;
+    /// How many slots have a kept leader.
+    std::size_t keptBodies = 0;
     /// For a body of such an island, its pairs as the lower side: [first, end) in the
     /// island's sorted pair list.
     std::vector<std::uint32_t> keptPairsFirst;
