@@ -78,7 +78,7 @@ void storeKeptSoftIsland(SoftKeptIsland& kept, std::span<BodySlot> slots, int th
     }
     CoupledIsland island;
     island.bodies = kept.bodies;
-    // the kept steps leave their impulses in the lanes (SoftStep::gatherWork)
+    // the kept steps leave their impulses in the lanes (SoftStep::gatherWork reads only the work)
     SoftBuffers& built = *kept.buffers;
     collectSoftResults(built, threads);
     storeSoftWarmStart(island, slots, built.contacts, built.results, built.order.colourPosition,

@@ -3,6 +3,8 @@
 // after the last sub-step.
 #include "step/soft_step.hpp"
 
+#include "step/soft_island_step.hpp"
+
 #include "body_state.hpp"
 #include "dynamics/energy_booking.hpp"
 #include "dynamics/soft_contact_solver.hpp"
@@ -34,63 +36,7 @@ std::unique_ptr<SoftBuffers>& threadBuffers()
     return buffers;
 }
 
-class SoftStep {
-public:
-    /// With `kept`, `buffers` hold the island's manifolds of its last step (12.5b).
-    SoftStep(const CoupledIsland& island, std::span<BodySlot> slots, const StepContext& context,
-             StepEvents& events, SoftBuffers& buffers, bool kept)
-        : m_island(island), m_slots(slots), m_context(context), m_settings(context.settings),
-          m_events(events), m_buffers(buffers), m_kept(kept)
-    {
-    }
-
-    void run(Real dt);
-
-private:
-    void prepare(Real dt);
-    /// Each body's start of the step; a kept island's bodies start where they moved to since
-    /// its manifolds were built (12.5b).
-    void startBodies();
-    /// The work of the island's impulses over the step, in a fixed order (the lanes' blocks,
-    /// then the manifolds not packed), and in `m_buffers.touching` each body one of whose
-    /// points pushed in the last sub-step (7.1).
-    IslandWork gatherWork();
-    /// One sub-step; `bookLast` when a sub-step went before it (its work is booked here).
-    void substep(Real h, const SoftSolveSettings& solve, bool bookLast);
-    void finish();
-    /// For each body, in one pass: with `bookWork`, adds to its work what its kinetic energy
-    /// gained since `m_buffers.kinetic` (the passes' work since the last call); then gravity
-    /// over h (none for h = 0); then keeps its kinetic energy in `m_buffers.kinetic`.
-    void bookWorkAndGravity(Real h, bool bookWork);
-    /// bookWorkAndGravity's work for body i.
-    void bookBody(std::size_t i, Real h, bool bookWork);
-    /// (12.4): body i's position and orientation advanced over h with its solved velocities.
-    void advancePose(std::size_t i, Real h);
-    /// Whether the sub-steps run in one parallel region (substepsInOneTeam): an island split
-    /// in halves (12.9), all of its manifolds in lanes, on several threads.
-    [[nodiscard]] bool substepsInOneTeam() const;
-    /// The sub-steps of substep and the restitution after them, every pass in one parallel
-    /// region, each thread sweeping its half's bodies and colours, the threads meeting at a
-    /// spinning barrier between passes: the same passes in the same order, so the same bits.
-    void substepsInOneTeam(Real h, const SoftSolveSettings& solve, int substeps);
-    Body& body(std::size_t local) { return m_slots[m_island.bodies[local]].body; }
-    /// visit(i) for each of the island's bodies, each half of a split island on the thread that
-    /// sweeps its colours (12.9); each call writes only body i's entries.
-    template <typename Visit>
-    void forEachBody(const Visit& visit)
-    {
-        parallelForSplit(m_island.bodies.size(), m_buffers.order.colours.halfSplit,
-                         m_context.threads, visit);
-    }
-
-    const CoupledIsland& m_island;
-    std::span<BodySlot> m_slots;
-    const StepContext& m_context;
-    const WorldSettings& m_settings;
-    StepEvents& m_events;
-    SoftBuffers& m_buffers;
-    bool m_kept;
-};
+} // namespace
 
 void SoftStep::run(Real dt)
 {
@@ -178,45 +124,6 @@ void SoftStep::startBodies()
     });
 }
 
-IslandWork SoftStep::gatherWork()
-{
-    const std::size_t count = m_island.bodies.size();
-    m_buffers.pushed.assign(m_buffers.contacts.size(), 0);
-    IslandWork total;
-    if (m_buffers.inLanes) {
-        m_buffers.lanes.work(m_buffers.blockWork, m_buffers.pushed, m_context.threads);
-        for (const SoftBlockWork& block : m_buffers.blockWork) {
-            total.normal += block.normal;
-            total.friction += block.friction;
-        }
-    }
-    const std::size_t first = firstUnpackedManifold(m_buffers);
-    for (std::size_t i = 0; i < m_buffers.manifolds.size(); ++i) {
-        const SoftManifold& manifold = m_buffers.manifolds[i];
-        bool pushes = false;
-        for (int k = 0; k < manifold.pointCount; ++k) {
-            total.normal += manifold.points[k].normalWork;
-            pushes = pushes || manifold.points[k].normalImpulse > 0.0;
-        }
-        total.friction += manifold.frictionWork;
-        m_buffers.pushed[first + i] = pushes ? 1 : 0;
-    }
-    // gathered here, so that each body's slot is written by the thread that finishes the body
-    m_buffers.touching.assign(count, 0);
-    for (std::size_t c = 0; c < m_buffers.pushed.size(); ++c) {
-        if (m_buffers.pushed[c] == 0) {
-            continue;
-        }
-        const ProxyPair& ends = m_buffers.order.colourEnds[c];
-        for (const std::uint32_t side : {ends.a, ends.b}) {
-            if (side < count) {
-                m_buffers.touching[side] = 1;
-            }
-        }
-    }
-    return total;
-}
-
 void SoftStep::substep(Real h, const SoftSolveSettings& solve, bool bookLast)
 {
     std::vector<SoftBody>& bodies = m_buffers.bodies;
@@ -240,55 +147,6 @@ void SoftStep::advancePose(std::size_t i, Real h)
     b.deltaRotation = glm::mat3_cast(b.orientation) * m_buffers.startRotationsT[i];
 }
 
-bool SoftStep::substepsInOneTeam() const
-{
-    const SoftColours& colours = m_buffers.order.colours;
-    return m_context.threads > 1 && m_buffers.inLanes && m_buffers.manifolds.empty() &&
-           colours.halfColours[0] + colours.halfColours[1] > 0 && colours.halfSplit > 0 &&
-           colours.halfSplit < m_island.bodies.size();
-}
-
-void SoftStep::substepsInOneTeam(Real h, const SoftSolveSettings& solve, int substeps)
-{
-    const std::size_t count = m_island.bodies.size();
-    const std::size_t split = m_buffers.order.colours.halfSplit;
-    m_buffers.kinetic.resize(count);
-    std::span<SoftBody> bodies = m_buffers.bodies;
-    SoftLanes& lanes = m_buffers.lanes;
-    parallelTeam(m_context.threads, [&](const PhaseTeam& team) {
-        // each half's bodies on the thread that sweeps its colours, as forEachBody gives them
-        const std::size_t share = team.share();
-        const std::size_t first = share == 0 ? 0 : share == 1 ? split : count;
-        const std::size_t last = share == 0 && team.shares() > 1 ? split : count;
-        for (int s = 0; s < substeps; ++s) {
-            for (std::size_t i = first; i < last; ++i) {
-                bookBody(i, h, s > 0);
-            }
-            team.sync();
-            lanes.warmStart(bodies, team);
-            team.sync();
-            lanes.solve(bodies, solve, true, team);
-            team.sync();
-            for (std::size_t i = first; i < last; ++i) {
-                advancePose(i, h);
-            }
-            team.sync();
-            lanes.solve(bodies, solve, false, team);
-            team.sync();
-        }
-        // the last sub-step's work, restitution (12.6), and its work
-        for (std::size_t i = first; i < last; ++i) {
-            bookBody(i, 0.0, true);
-        }
-        team.sync();
-        lanes.restitute(bodies, m_settings.restitutionThreshold, team);
-        team.sync();
-        for (std::size_t i = first; i < last; ++i) {
-            bookBody(i, 0.0, true);
-        }
-    });
-}
-
 void SoftStep::bookWorkAndGravity(Real h, bool bookWork)
 {
     m_buffers.kinetic.resize(m_island.bodies.size());
@@ -309,40 +167,6 @@ void SoftStep::bookBody(std::size_t i, Real h, bool bookWork)
     m_buffers.kinetic[i] =
         kineticEnergyWith(m_buffers.frames[i], soft.linearVelocity, soft.angularVelocity);
 }
-
-void SoftStep::finish()
-{
-    const std::size_t count = m_island.bodies.size();
-    // (12.5): the last sub-step's impulses start the next step's sub-steps; a kept island's
-    // stay in its lanes, and go to the caches only when its manifolds are built again (12.5b)
-    if (!m_kept) {
-        collectSoftResults(m_buffers, m_context.threads);
-        storeSoftWarmStart(m_island, m_slots, m_buffers.contacts, m_buffers.results,
-                           m_buffers.order.colourPosition, m_context.threads, m_buffers.centres,
-                           m_buffers.startOrientations);
-    }
-    const IslandWork total = gatherWork();
-    std::vector<SolverBody>& inverse = m_buffers.inverseMasses;
-    inverse.resize(count);
-    for (std::size_t i = 0; i < count; ++i) {
-        inverse[i].invMass = m_buffers.bodies[i].invMass;
-    }
-    const std::vector<ContactWork> work =
-        shareIslandWork(total, m_buffers.bodyWork, m_buffers.kineticStart, inverse);
-    forEachBody([&](std::size_t i) {
-        Body& b = body(i);
-        const SoftBody& soft = m_buffers.bodies[i];
-        b.position = m_buffers.centres[i] + soft.deltaPosition;
-        b.orientation = soft.orientation;
-        b.linearVelocity = soft.linearVelocity;
-        b.angularVelocity = soft.angularVelocity;
-        refreshWorldInertia(b);
-        bookContact(b, work[i], energyOf(b, m_settings.gravity) - m_buffers.energies[i], false);
-        m_slots[m_island.bodies[i]].touchingGround = m_buffers.touching[i] != 0;
-    });
-}
-
-} // namespace
 
 void advanceSoft(const CoupledIsland& island, std::span<BodySlot> slots,
                  const StepContext& context, Real dt, StepEvents& events)
