@@ -133,7 +133,7 @@ void SoftLanes::work(std::vector<SoftBlockWork>& blockWork, std::span<std::uint8
                      int threads) const
 {
     const Storage& storage = *m_storage;
-    blockWork.resize(storage.blocks.size());
+    blockWork.resize(blockCountOf(storage));
     forEachBlockShare(storage, threads, [&](std::size_t first, std::size_t last) {
         for (std::size_t b = first; b < last; ++b) {
             const LaneBlock& block = storage.blocks[b];
@@ -155,7 +155,7 @@ void SoftLanes::work(std::vector<SoftBlockWork>& blockWork, std::span<std::uint8
 void SoftLanes::unpack(std::span<SoftManifold> manifolds, int threads) const
 {
     const Storage& storage = *m_storage;
-    parallelFor(storage.blocks.size(), threads, [&](std::size_t b) {
+    parallelFor(blockCountOf(storage), threads, [&](std::size_t b) {
         const LaneBlock& block = storage.blocks[b];
         for (std::uint32_t lane = 0; lane < block.lanes; ++lane) {
             SoftManifold& m = manifolds[block.manifold[lane]];

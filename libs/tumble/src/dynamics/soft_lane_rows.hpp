@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <cstring>
 #include <span>
+#include <type_traits>
 
 namespace tumble::soft_rows {
 
@@ -56,13 +57,15 @@ struct LaneBlock {
         frictionWork, invMassA, invMassB, restitution;
     Mask againstStatic, movesA, movesB;
     LanePoint points[4];
-    std::array<std::uint32_t, kLanes> manifold{};
-    std::array<std::uint32_t, kLanes> bodyA{};
-    std::array<std::uint32_t, kLanes> bodyB{};
-    std::uint32_t lanes = 0;
+    std::array<std::uint32_t, kLanes> manifold;
+    std::array<std::uint32_t, kLanes> bodyA;
+    std::array<std::uint32_t, kLanes> bodyB;
+    std::uint32_t lanes;
     /// Whether every lane holds a manifold of four points: then every point's mask is set.
-    bool everyPoint = false;
+    bool everyPoint;
 };
+// a block is written whole by the thread that packs it (packBlock): made, it writes nothing
+static_assert(std::is_trivially_default_constructible_v<LaneBlock>);
 
 /// select(active, yes, no) for a point's mask, or `yes` where the block is known to have every
 /// point (LaneBlock::everyPoint): the same lanes, without the selection.

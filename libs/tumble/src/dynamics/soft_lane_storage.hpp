@@ -9,6 +9,9 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <memory>
+#include <new>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -23,8 +26,40 @@ inline constexpr std::size_t kThreadedLaneManifolds = 64;
 
 } // namespace soft_rows
 
+namespace soft_rows {
+
+/// std::allocator, except that an element made without arguments is default-initialised: the
+/// blocks a vector grows by are left unwritten, for their packing threads to write first.
+template <typename T>
+struct DefaultInitAllocator : std::allocator<T> {
+    template <typename U>
+    struct rebind {
+        using other = DefaultInitAllocator<U>;
+    };
+    DefaultInitAllocator() = default;
+    template <typename U>
+    DefaultInitAllocator(const DefaultInitAllocator<U>&) noexcept
+    {
+    }
+    template <typename U>
+    void construct(U* place) noexcept(std::is_nothrow_default_constructible_v<U>)
+    {
+        ::new (static_cast<void*>(place)) U;
+    }
+    template <typename U, typename... Args>
+    void construct(U* place, Args&&... args)
+    {
+        ::new (static_cast<void*>(place)) U(std::forward<Args>(args)...);
+    }
+};
+
+} // namespace soft_rows
+
 struct SoftLanes::Storage {
-    std::vector<soft_rows::LaneBlock> blocks;
+    /// The last pack's blocks first (soft_rows::blockCountOf), then those of larger islands
+    /// packed before it.
+    std::vector<soft_rows::LaneBlock, soft_rows::DefaultInitAllocator<soft_rows::LaneBlock>>
+        blocks;
     /// Colour c's blocks are [colourBlocks[c], colourBlocks[c + 1]); its manifold count.
     std::vector<std::size_t> colourBlocks;
     std::vector<std::size_t> colourManifolds;
@@ -38,6 +73,14 @@ struct SoftLanes::Storage {
 };
 
 namespace soft_rows {
+
+/// The blocks the last pack filled: the first ones of `blocks`, which keeps those of a larger
+/// island packed before.
+template <typename Storage>
+std::size_t blockCountOf(const Storage& storage)
+{
+    return storage.colourBlocks.empty() ? 0 : storage.colourBlocks.back();
+}
 
 /// The blocks of a split island's halves (SoftColours::halfColours) that thread `share` of
 /// `shares` sweeps: the first half's colours on the first thread, the second half's on the

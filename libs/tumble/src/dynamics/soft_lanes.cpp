@@ -244,12 +244,19 @@ void SoftLanes::pack(const ManifoldSource& source, const SoftColours& colours,
         storage.anyThreadedColour =
             storage.anyThreadedColour || size >= kThreadedLaneManifolds;
     }
-    // grown at least twofold: islands of every size take turns in one thread's lanes, and a
-    // vector grown to each larger one's size exactly would take fresh pages at every growth
-    if (blockCount > storage.blocks.capacity()) {
-        storage.blocks.reserve(std::max(blockCount, 2 * storage.blocks.capacity()));
+    // islands of every size take turns in one thread's lanes: the vector never shrinks, since
+    // blocks constructed again after a smaller island would be cleared on the calling thread
+    // (every block this island fills, packBlock empties), and it grows at least twofold, since
+    // one grown to each larger island's size exactly would take fresh pages at every growth
+    if (blockCount > storage.blocks.size()) {
+        if (blockCount > storage.blocks.capacity()) {
+            // every block is packed again below: none is moved to the new storage
+            const std::size_t capacity = std::max(blockCount, 2 * storage.blocks.capacity());
+            storage.blocks.clear();
+            storage.blocks.reserve(capacity);
+        }
+        storage.blocks.resize(blockCount);
     }
-    storage.blocks.resize(blockCount);
     // the first manifold and the lanes of each block, so that the blocks (not the colours, of
     // very unequal sizes) are shared out over the threads, each writing only itself
     storage.firstManifold.resize(blockCount);

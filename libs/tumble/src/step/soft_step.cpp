@@ -17,6 +17,7 @@
 #include "step/soft_kept_island.hpp"
 #include "step/soft_manifolds.hpp"
 #include "step/soft_warm_start.hpp"
+#include "step/step_scratch.hpp"
 #include "parallel_for.hpp"
 
 #include <algorithm>
@@ -29,11 +30,15 @@ namespace tumble {
 namespace {
 
 /// The buffers a thread builds an island's manifolds in; kept by the island afterwards, which
-/// gives back the ones it held (keepSoftIsland).
-std::unique_ptr<SoftBuffers>& threadBuffers()
+/// gives back the ones it held (keepSoftIsland). Large islands (kLargeIslandPairs) and the rest
+/// have a set each: both take turns on a thread within a step (a pyramid and a lone cube), and
+/// a large island stepped after a small one in the same vectors would construct again, on the
+/// calling thread, every contact and block the small one dropped.
+std::unique_ptr<SoftBuffers>& threadBuffers(const CoupledIsland& island)
 {
-    thread_local std::unique_ptr<SoftBuffers> buffers = std::make_unique<SoftBuffers>();
-    return buffers;
+    thread_local std::unique_ptr<SoftBuffers> large = std::make_unique<SoftBuffers>();
+    thread_local std::unique_ptr<SoftBuffers> small = std::make_unique<SoftBuffers>();
+    return island.pairs.size() >= detail::kLargeIslandPairs ? large : small;
 }
 
 } // namespace
@@ -182,7 +187,7 @@ void advanceSoft(const CoupledIsland& island, std::span<BodySlot> slots,
         ++events.statistics.keptIslands;
         return;
     }
-    std::unique_ptr<SoftBuffers>& buffers = threadBuffers();
+    std::unique_ptr<SoftBuffers>& buffers = threadBuffers(island);
     SoftStep(island, slots, context, events, *buffers, false).run(dt);
     if (std::is_sorted(island.pairs.begin(), island.pairs.end()) &&
         softBodiesStill(*buffers, island.bodies, slots, context.threads)) {
