@@ -82,7 +82,8 @@ void storeKeptSoftIsland(SoftKeptIsland& kept, std::span<BodySlot> slots, int th
     SoftBuffers& built = *kept.buffers;
     collectSoftResults(built, threads);
     storeSoftWarmStart(island, slots, built.contacts, built.results, built.order.colourPosition,
-                       threads, built.centres, built.startOrientations);
+                       threads, built.order.colours.halfSplit, built.centres,
+                       built.startOrientations);
     kept.unstored = false;
 }
 

@@ -56,7 +56,8 @@ void SoftStep::finish()
     if (!m_kept) {
         collectSoftResults(m_buffers, m_context.threads);
         storeSoftWarmStart(m_island, m_slots, m_buffers.contacts, m_buffers.results,
-                           m_buffers.order.colourPosition, m_context.threads, m_buffers.centres,
+                           m_buffers.order.colourPosition, m_context.threads,
+                           m_buffers.order.colours.halfSplit, m_buffers.centres,
                            m_buffers.startOrientations);
     }
     const IslandWork total = gatherWork();

@@ -123,23 +123,32 @@ void startFromKept(const KeptImpulses& kept, SoftManifold& m)
 void storeSoftWarmStart(const CoupledIsland& island, std::span<BodySlot> slots,
                         std::span<const IslandContact> contacts,
                         std::span<const SoftContactResult> results,
-                        std::span<const std::uint32_t> resultOf, int threads,
+                        std::span<const std::uint32_t> resultOf, int threads, std::size_t split,
                         std::span<const Vec3> centres, std::span<const Quat> orientations)
 {
-    for (const std::uint32_t slot : island.bodies) {
-        slots[slot].softContacts.clear();
-    }
-    // each owner's cache is written by one share, from its contacts in the narrow phase's order
-    // (owner after owner, as the next step reads them); each share reads the owners from a
-    // table of their own, not from every contact
+    const std::size_t bodies = island.bodies.size();
+    const auto shares = static_cast<std::size_t>(std::max(1, threads));
+    // each owner's cache is written by one share: with a split, the thread that finishes the
+    // owner's half (12.9), else every shares-th owner
+    const bool halves = split > 0 && split < bodies && shares >= 2;
+    const auto shareOf = [&](std::uint32_t owner) {
+        return halves ? (owner < split ? 0 : 1) : owner % shares;
+    };
+    // each share reads the owners from a table of their own, not from every contact, and
+    // writes its owners' contacts in the narrow phase's order (owner after owner, as the next
+    // step reads them)
     thread_local std::vector<std::uint32_t> keptOwners;
     std::vector<std::uint32_t>& owners = keptOwners;
     owners.resize(contacts.size());
     parallelFor(contacts.size(), threads, [&](std::size_t k) { owners[k] = contacts[k].owner; });
-    const auto shares = static_cast<std::size_t>(std::max(1, threads));
     parallelFor(shares, threads, [&](std::size_t share) {
+        for (std::uint32_t local = 0; local < bodies; ++local) {
+            if (shareOf(local) == share) {
+                slots[island.bodies[local]].softContacts.clear();
+            }
+        }
         for (std::size_t index = 0; index < contacts.size(); ++index) {
-            if (owners[index] % shares != share) {
+            if (shareOf(owners[index]) != share) {
                 continue;
             }
             const IslandContact& contact = contacts[index];

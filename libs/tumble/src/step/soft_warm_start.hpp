@@ -40,14 +40,15 @@ void startFromKept(const KeptImpulses& kept, SoftManifold& manifold);
 
 /// Keeps the contacts' impulses in their owners' caches, replacing the island's old ones:
 /// `contacts` in the narrow phase's order, contact i's result at results[resultOf[i]]. Each
-/// owner's contacts go to one of `threads`. The points are kept in the frame of the pose each
-/// owner had when they were found: `centres` and `orientations` by the island's index, or with
-/// none, its pose now.
+/// owner's contacts go to one of `threads`: with 0 < split < the island's bodies, the owners
+/// before `split` to the first thread and the rest to the second (a split island's halves,
+/// (12.9)). The points are kept in the frame of the pose each owner had when they were found:
+/// `centres` and `orientations` by the island's index, or with none, its pose now.
 void storeSoftWarmStart(const CoupledIsland& island, std::span<BodySlot> slots,
                         std::span<const IslandContact> contacts,
                         std::span<const SoftContactResult> results,
                         std::span<const std::uint32_t> resultOf, int threads,
-                        std::span<const Vec3> centres = {},
+                        std::size_t split = 0, std::span<const Vec3> centres = {},
                         std::span<const Quat> orientations = {});
 
 } // namespace tumble
