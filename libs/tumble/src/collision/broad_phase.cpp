@@ -194,50 +194,51 @@ void BroadPhase::sweep(int threads)
 {
     m_grownPairs.clear();
     const std::size_t count = m_entries.size();
-    // the pairs in proxy order, not sweep order, so they depend on the proxies alone
     if (threads <= 1 || count < kEntriesPerShare * static_cast<std::size_t>(threads)) {
         sweepFrom(0, count, m_grownPairs);
-        std::sort(m_grownPairs.begin(), m_grownPairs.end());
-        return;
-    }
-    // each share of the sorted entries finds and sorts the pairs of its first boxes; as many
-    // shares to each thread
-    const auto threadCount = static_cast<std::size_t>(threads);
-    const std::size_t shares = count / kEntriesPerShare / threadCount * threadCount;
-    m_sharePairs.resize(shares);
-    parallelFor(shares, threads, [&](std::size_t share) {
-        std::vector<ProxyPair>& pairs = m_sharePairs[share];
-        pairs.clear();
-        sweepFrom(count * share / shares, count * (share + 1) / shares, pairs);
-        std::sort(pairs.begin(), pairs.end());
-    });
-    m_shareEnds.assign(1, 0);
-    for (const std::vector<ProxyPair>& pairs : m_sharePairs) {
-        m_grownPairs.insert(m_grownPairs.end(), pairs.begin(), pairs.end());
-        m_shareEnds.push_back(m_grownPairs.size());
-    }
-    // neighbouring sorted runs merged level by level, each level's merges over the threads,
-    // between the pairs and a kept buffer (no allocation once both have grown)
-    m_mergedPairs.resize(m_grownPairs.size());
-    std::vector<ProxyPair>* from = &m_grownPairs;
-    std::vector<ProxyPair>* to = &m_mergedPairs;
-    for (std::size_t width = 1; width < shares; width *= 2) {
-        const std::size_t merges = (shares + 2 * width - 1) / (2 * width);
-        parallelFor(merges, threads, [&](std::size_t merge) {
-            const std::size_t first = 2 * width * merge;
-            const std::size_t middle = std::min(first + width, shares);
-            const std::size_t last = std::min(first + 2 * width, shares);
-            const auto at = [&](std::vector<ProxyPair>& pairs, std::size_t share) {
-                return pairs.begin() + static_cast<std::ptrdiff_t>(m_shareEnds[share]);
-            };
-            std::merge(at(*from, first), at(*from, middle), at(*from, middle), at(*from, last),
-                       at(*to, first));
+    } else {
+        // each share of the sorted entries finds the pairs of its first boxes; as many shares
+        // to each thread
+        const auto threadCount = static_cast<std::size_t>(threads);
+        const std::size_t shares = count / kEntriesPerShare / threadCount * threadCount;
+        m_sharePairs.resize(shares);
+        parallelFor(shares, threads, [&](std::size_t share) {
+            std::vector<ProxyPair>& pairs = m_sharePairs[share];
+            pairs.clear();
+            sweepFrom(count * share / shares, count * (share + 1) / shares, pairs);
         });
-        std::swap(from, to);
+        for (const std::vector<ProxyPair>& pairs : m_sharePairs) {
+            m_grownPairs.insert(m_grownPairs.end(), pairs.begin(), pairs.end());
+        }
     }
-    if (from != &m_grownPairs) {
-        std::copy(from->begin(), from->end(), m_grownPairs.begin());
+    // the pairs in proxy order, not sweep order, so they depend on the proxies alone
+    sortPairs(count);
+}
+
+void BroadPhase::sortPairs(std::size_t proxyCount)
+{
+    // a counting sort on the first proxy (Cormen et al. 2009, 8.2), then each proxy's few
+    // pairs by the second: linear in the pairs, where a comparison sort took a third of a sweep
+    m_pairStarts.assign(proxyCount + 1, 0);
+    for (const ProxyPair& pair : m_grownPairs) {
+        ++m_pairStarts[pair.a + 1];
     }
+    for (std::size_t proxy = 0; proxy < proxyCount; ++proxy) {
+        m_pairStarts[proxy + 1] += m_pairStarts[proxy];
+    }
+    m_sortedPairs.resize(m_grownPairs.size());
+    for (const ProxyPair& pair : m_grownPairs) {
+        m_sortedPairs[m_pairStarts[pair.a]++] = pair;
+    }
+    // each start has moved to the next proxy's: the runs are [starts[a - 1], starts[a])
+    std::uint32_t first = 0;
+    for (std::size_t proxy = 0; proxy < proxyCount; ++proxy) {
+        const std::uint32_t last = m_pairStarts[proxy];
+        std::sort(m_sortedPairs.begin() + static_cast<std::ptrdiff_t>(first),
+                  m_sortedPairs.begin() + static_cast<std::ptrdiff_t>(last));
+        first = last;
+    }
+    std::swap(m_grownPairs, m_sortedPairs);
 }
 
 } // namespace tumble

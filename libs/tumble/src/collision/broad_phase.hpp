@@ -63,6 +63,8 @@ private:
     void sortEntries();
     void sortFromScratch();
     void sweep(int threads);
+    /// m_grownPairs in proxy order, a then b; every proxy index below `proxyCount`.
+    void sortPairs(std::size_t proxyCount);
     void sweepFrom(std::size_t begin, std::size_t end, std::vector<ProxyPair>& pairs) const;
 
     std::vector<Entry> m_entries;
@@ -74,10 +76,9 @@ private:
     bool m_sweptLastUpdate = false;
     /// The pairs found from each share of the sorted entries, when the sweep is shared.
     std::vector<std::vector<ProxyPair>> m_sharePairs;
-    /// Where each share's sorted pairs end in m_pairs, after a 0, while they are merged.
-    std::vector<std::size_t> m_shareEnds;
-    /// The other side of each level of the merge.
-    std::vector<ProxyPair> m_mergedPairs;
+    /// sortPairs' counts and places by first proxy, and the pairs it places.
+    std::vector<std::uint32_t> m_pairStarts;
+    std::vector<ProxyPair> m_sortedPairs;
     int m_axis = 0;
 };
 
