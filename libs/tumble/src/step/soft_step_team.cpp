@@ -27,11 +27,13 @@ void SoftStep::substepsInOneTeam(Real h, const SoftSolveSettings& solve, int sub
         const std::size_t share = team.share();
         const std::size_t first = share == 0 ? 0 : share == 1 ? split : count;
         const std::size_t last = share == 0 && team.shares() > 1 ? split : count;
+        // a pass starts with the thread's own half's colours, which touch only its own bodies,
+        // so a thread's work on its bodies needs no meeting before the pass; the colours across
+        // touch both halves, so each pass ends with one
         for (int s = 0; s < substeps; ++s) {
             for (std::size_t i = first; i < last; ++i) {
                 bookBody(i, h, s > 0);
             }
-            team.sync();
             lanes.warmStart(bodies, team);
             team.sync();
             lanes.solve(bodies, solve, true, team);
@@ -39,7 +41,6 @@ void SoftStep::substepsInOneTeam(Real h, const SoftSolveSettings& solve, int sub
             for (std::size_t i = first; i < last; ++i) {
                 advancePose(i, h);
             }
-            team.sync();
             lanes.solve(bodies, solve, false, team);
             team.sync();
         }
@@ -47,7 +48,6 @@ void SoftStep::substepsInOneTeam(Real h, const SoftSolveSettings& solve, int sub
         for (std::size_t i = first; i < last; ++i) {
             bookBody(i, 0.0, true);
         }
-        team.sync();
         lanes.restitute(bodies, m_settings.restitutionThreshold, team);
         team.sync();
         for (std::size_t i = first; i < last; ++i) {
