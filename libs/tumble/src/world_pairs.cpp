@@ -78,7 +78,13 @@ void World::findPairs(detail::StepScratch& scratch, Real dt)
     scratch.pairFromKept.assign(pairs.size(), 0);
     scratch.pairTouches.assign(pairs.size(), 0);
     const bool carry = m_settings.solver == ContactSolver::Soft;
-    scratch.pairManifolds.resize(carry ? pairs.size() : 0);
+    // never shrunk while carried: each entry is written before it is read, and one grown back
+    // after a step of fewer pairs would construct (clear) what it grows by on this thread
+    if (!carry) {
+        scratch.pairManifolds.clear();
+    } else if (scratch.pairManifolds.size() < pairs.size()) {
+        scratch.pairManifolds.resize(pairs.size());
+    }
     scratch.pairHasPoints.assign(carry ? pairs.size() : 0, 0);
     scratch.pairAtRest.assign(pairs.size(), 0);
     // each body's reach once when the pairs outnumber the bodies (3.4 a body on the pyramid),

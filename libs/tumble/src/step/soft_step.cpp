@@ -177,9 +177,9 @@ void advanceSoft(const CoupledIsland& island, std::span<BodySlot> slots,
                  const StepContext& context, Real dt, StepEvents& events)
 {
     // (12.5b): an island whose bodies stayed put steps on the manifolds it kept; any other
-    // builds them in its thread's buffers, and keeps those for the next step only if its
-    // bodies stayed put over this one (a moving island's buffers stay the thread's, warm in
-    // its caches, for the next island)
+    // builds them in its thread's buffers (or in those it kept before), and keeps those for the
+    // next step only if its bodies stayed put over this one (a moving island's buffers stay the
+    // thread's, warm in its caches, for the next island)
     SoftKeptIsland& kept = slots[island.bodies.front()].softKept;
     if (island.keepsSoftManifolds) {
         SoftStep(island, slots, context, events, *kept.buffers, true).run(dt);
@@ -187,7 +187,10 @@ void advanceSoft(const CoupledIsland& island, std::span<BodySlot> slots,
         ++events.statistics.keptIslands;
         return;
     }
-    std::unique_ptr<SoftBuffers>& buffers = threadBuffers(island);
+    // an island kept before builds in the buffers it kept (their impulses were stored before
+    // any step: World::decideKeptSoftIslands), whose pages are already the process's
+    std::unique_ptr<SoftBuffers>& buffers =
+        kept.buffers != nullptr ? kept.buffers : threadBuffers(island);
     SoftStep(island, slots, context, events, *buffers, false).run(dt);
     if (std::is_sorted(island.pairs.begin(), island.pairs.end()) &&
         softBodiesStill(*buffers, island.bodies, slots, context.threads)) {

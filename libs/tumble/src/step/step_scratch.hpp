@@ -36,7 +36,8 @@ struct StepScratch {
     std::vector<std::uint32_t> pairsTested;
     std::vector<std::uint32_t> pairOwners;
     OwnerGroups pairGroups;
-    /// With the soft step, each pair's points within the narrow phase's margin (mayTouch).
+    /// With the soft step, each pair's points within the narrow phase's margin (mayTouch), at
+    /// the pair's index; entries past this step's pairs are left from steps with more.
     std::vector<PairManifold> pairManifolds;
     /// With them, 1 where the manifold has points (CoupledIsland::pairHasPoints).
     std::vector<std::uint8_t> pairHasPoints;
