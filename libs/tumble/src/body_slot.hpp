@@ -49,9 +49,11 @@ constexpr std::uint32_t kGroundSide = 0xffffffffu;
 constexpr std::uint32_t kPlaneSide = 0x80000000u;
 
 struct BodySlot {
-    Body body;
+    /// First, on the line of the body's kind and shape, which no step writes: the serial passes
+    /// over every slot read them without fetching lines another thread's finish wrote.
     std::uint32_t generation = 0;
     bool alive = false;
+    Body body;
     /// Whether any vertex touched the ground at the end of the last step.
     bool touchingGround = false;
     /// End of the first step of the current slow spell, s.

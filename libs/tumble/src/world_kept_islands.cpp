@@ -26,7 +26,8 @@ void World::markKeptSoftIslands(detail::StepScratch& scratch) const
     for (std::uint32_t index = 0; index < m_slots.size(); ++index) {
         const BodySlot& slot = m_slots[index];
         const SoftKeptIsland& kept = slot.softKept;
-        if (!slot.alive || slot.body.asleep || !kept.valid || kept.edits != m_edits ||
+        // the kept island first: only its leader's slot is read further
+        if (!kept.valid || !slot.alive || slot.body.asleep || kept.edits != m_edits ||
             !softBodiesStill(*kept.buffers, kept.bodies, m_slots, threadCount())) {
             continue;
         }

@@ -82,7 +82,11 @@ void World::buildStepIslands(detail::StepScratch& scratch, Real dt)
                                           m_settings.contactTolerance);
         }
         for (const std::uint32_t body : bodies) {
-            m_slots[body].coupled = coupled;
+            // written only when it changes: a line written here would cross to the core that
+            // finishes the body
+            if (m_slots[body].coupled != coupled) {
+                m_slots[body].coupled = coupled;
+            }
         }
         if (!coupled) {
             continue;

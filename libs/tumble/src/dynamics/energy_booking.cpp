@@ -73,12 +73,20 @@ std::vector<ContactWork> shareIslandWork(const IslandWork& total, std::span<cons
     }
     std::vector<ContactWork> work(count);
     for (std::size_t i = 0; i < count; ++i) {
-        const Real share = kinetic > 0.0 ? kineticBefore[i] / kinetic
-                                         : (1.0 / bodies[i].invMass) / mass;
-        work[i].normal = share * total.normal;
-        work[i].friction = share * total.friction;
-        work[i].exchanged = bodyWork[i] - work[i].normal - work[i].friction;
+        work[i] = shareOfIslandWork(total, kinetic, mass, bodyWork[i], kineticBefore[i],
+                                    bodies[i].invMass);
     }
+    return work;
+}
+
+ContactWork shareOfIslandWork(const IslandWork& total, Real kinetic, Real mass, Real bodyWork,
+                              Real kineticBefore, Real invMass)
+{
+    const Real share = kinetic > 0.0 ? kineticBefore / kinetic : (1.0 / invMass) / mass;
+    ContactWork work;
+    work.normal = share * total.normal;
+    work.friction = share * total.friction;
+    work.exchanged = bodyWork - work.normal - work.friction;
     return work;
 }
 

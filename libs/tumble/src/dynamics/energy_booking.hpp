@@ -68,4 +68,10 @@ std::vector<ContactWork> shareIslandWork(const IslandWork& total, std::span<cons
                                          std::span<const Real> kineticBefore,
                                          std::span<const SolverBody> bodies);
 
+/// shareIslandWork for one body, given the island's kinetic energy before the stage
+/// (`kinetic`) and its mass (`mass`), and the body's `bodyWork`, kinetic energy before the stage
+/// and inverse mass.
+ContactWork shareOfIslandWork(const IslandWork& total, Real kinetic, Real mass, Real bodyWork,
+                              Real kineticBefore, Real invMass);
+
 } // namespace tumble

@@ -52,7 +52,6 @@ struct SoftBuffers {
     std::vector<Real> kineticStart;
     std::vector<Real> bodyWork;
     std::vector<Real> kinetic;
-    std::vector<SolverBody> inverseMasses;
     /// Whether a point of the body's pushed in the last sub-step (7.1), gathered from the
     /// contacts before the bodies' pass writes it to their slots.
     std::vector<std::uint8_t> touching;

@@ -10,7 +10,9 @@
 #include "step/step_context.hpp"
 #include "step/step_events.hpp"
 
+#include <array>
 #include <span>
+#include <utility>
 
 namespace tumble {
 
@@ -63,6 +65,38 @@ private:
     {
         parallelForSplit(m_island.bodies.size(), m_buffers.order.colours.halfSplit,
                          m_context.threads, visit);
+    }
+
+    /// The sums of term(i) = {x_i, y_i} over the island's bodies: a split island's halves
+    /// (12.9) each summed in order on the thread forEachBody gives them, then the first half's
+    /// sum plus the second's, so the bits depend on the island alone.
+    template <typename Term>
+    std::pair<Real, Real> sumOverHalves(const Term& term)
+    {
+        const std::size_t count = m_island.bodies.size();
+        const std::size_t split = m_buffers.order.colours.halfSplit;
+        const bool halves = split > 0 && split < count;
+        std::array<std::pair<Real, Real>, 2> sums{};
+        const auto sumHalf = [&](std::size_t half) {
+            const std::size_t first = half == 0 ? 0 : (halves ? split : count);
+            const std::size_t last = half == 0 && halves ? split : count;
+            for (std::size_t i = first; i < last; ++i) {
+                const auto [x, y] = term(i);
+                sums[half].first += x;
+                sums[half].second += y;
+            }
+        };
+        if (halves && m_context.threads > 1) {
+            parallelPhases(1, 2, [&](std::size_t, std::size_t share, std::size_t shares) {
+                for (std::size_t half = share; half < 2; half += shares) {
+                    sumHalf(half);
+                }
+            });
+        } else {
+            sumHalf(0);
+            sumHalf(1);
+        }
+        return {sums[0].first + sums[1].first, sums[0].second + sums[1].second};
     }
 
     const CoupledIsland& m_island;

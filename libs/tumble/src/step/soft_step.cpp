@@ -93,7 +93,7 @@ void SoftStep::startBodies()
     const std::size_t count = m_island.bodies.size();
     m_buffers.energies.resize(count);
     m_buffers.kineticStart.resize(count);
-    m_buffers.bodyWork.assign(count, 0.0);
+    m_buffers.bodyWork.resize(count);
     // the loop below writes every dynamic body whole; the static body is the last
     m_buffers.bodies.resize(count + 1);
     m_buffers.bodies[count] = SoftBody{};
@@ -105,6 +105,7 @@ void SoftStep::startBodies()
     forEachBody([&](std::size_t i) {
         // the exact step's kept constraints do not survive a soft step, nor does what the
         // island's other bodies kept of islands they led
+        m_buffers.bodyWork[i] = 0.0;
         BodySlot& slot = m_slots[m_island.bodies[i]];
         slot.kept.release();
         if (i != 0) {

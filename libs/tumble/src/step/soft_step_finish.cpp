@@ -50,7 +50,6 @@ IslandWork SoftStep::gatherWork()
 
 void SoftStep::finish()
 {
-    const std::size_t count = m_island.bodies.size();
     // (12.5): the last sub-step's impulses start the next step's sub-steps; a kept island's
     // stay in its lanes, and go to the caches only when its manifolds are built again (12.5b)
     if (!m_kept) {
@@ -61,22 +60,26 @@ void SoftStep::finish()
                            m_buffers.startOrientations);
     }
     const IslandWork total = gatherWork();
-    std::vector<SolverBody>& inverse = m_buffers.inverseMasses;
-    inverse.resize(count);
-    for (std::size_t i = 0; i < count; ++i) {
-        inverse[i].invMass = m_buffers.bodies[i].invMass;
-    }
-    const std::vector<ContactWork> work =
-        shareIslandWork(total, m_buffers.bodyWork, m_buffers.kineticStart, inverse);
+    // (8.4): the island's kinetic energy and mass, each half summed by the thread that
+    // finishes its bodies
+    const std::pair<Real, Real> sums = sumOverHalves([&](std::size_t i) {
+        return std::pair<Real, Real>{m_buffers.kineticStart[i],
+                                     1.0 / m_buffers.bodies[i].invMass};
+    });
+    const Real kinetic = sums.first;
+    const Real mass = sums.second;
     forEachBody([&](std::size_t i) {
         Body& b = body(i);
         const SoftBody& soft = m_buffers.bodies[i];
+        const ContactWork work =
+            shareOfIslandWork(total, kinetic, mass, m_buffers.bodyWork[i],
+                              m_buffers.kineticStart[i], soft.invMass);
         b.position = m_buffers.centres[i] + soft.deltaPosition;
         b.orientation = soft.orientation;
         b.linearVelocity = soft.linearVelocity;
         b.angularVelocity = soft.angularVelocity;
         refreshWorldInertia(b);
-        bookContact(b, work[i], energyOf(b, m_settings.gravity) - m_buffers.energies[i], false);
+        bookContact(b, work, energyOf(b, m_settings.gravity) - m_buffers.energies[i], false);
         m_slots[m_island.bodies[i]].touchingGround = m_buffers.touching[i] != 0;
     });
 }
