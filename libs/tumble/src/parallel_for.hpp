@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
+#include <utility>
 
 #include "spin_barrier.hpp"
 
@@ -125,6 +126,17 @@ void parallelPhases(std::size_t phases, int threads, const Body& body)
     });
 }
 
+/// The iterations [first, last) of thread `share` of `shares` in the two fixed shares of
+/// parallelForSplit: [0, split) for the first, [split, count) for the second, all of them for a
+/// thread alone, none for a third.
+inline std::pair<std::size_t, std::size_t> splitShare(std::size_t count, std::size_t split,
+                                                      std::size_t share, std::size_t shares)
+{
+    const std::size_t first = share == 0 ? 0 : (share == 1 ? split : count);
+    const std::size_t last = share == 0 && shares > 1 ? split : count;
+    return {first, last};
+}
+
 /// parallelFor with the iterations in two fixed shares: [0, split) on the first thread and
 /// [split, count) on the second (any further thread idle), where threads > 1 and
 /// 0 < split < count; else parallelFor. For loops over data the same two threads work on in
@@ -137,8 +149,7 @@ void parallelForSplit(std::size_t count, std::size_t split, int threads, const B
         return;
     }
     parallelPhases(1, 2, [&](std::size_t, std::size_t share, std::size_t shares) {
-        const std::size_t first = share == 0 ? 0 : split;
-        const std::size_t last = share == 0 && shares > 1 ? split : count;
+        const auto [first, last] = splitShare(count, split, share, shares);
         for (std::size_t i = first; i < last; ++i) {
             body(i);
         }

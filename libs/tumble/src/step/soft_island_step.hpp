@@ -78,8 +78,7 @@ private:
         const bool halves = split > 0 && split < count;
         std::array<std::pair<Real, Real>, 2> sums{};
         const auto sumHalf = [&](std::size_t half) {
-            const std::size_t first = half == 0 ? 0 : (halves ? split : count);
-            const std::size_t last = half == 0 && halves ? split : count;
+            const auto [first, last] = splitShare(count, halves ? split : count, half, 2);
             for (std::size_t i = first; i < last; ++i) {
                 const auto [x, y] = term(i);
                 sums[half].first += x;

@@ -24,9 +24,7 @@ void SoftStep::substepsInOneTeam(Real h, const SoftSolveSettings& solve, int sub
     SoftLanes& lanes = m_buffers.lanes;
     parallelTeam(m_context.threads, [&](const PhaseTeam& team) {
         // each half's bodies on the thread that sweeps its colours, as forEachBody gives them
-        const std::size_t share = team.share();
-        const std::size_t first = share == 0 ? 0 : share == 1 ? split : count;
-        const std::size_t last = share == 0 && team.shares() > 1 ? split : count;
+        const auto [first, last] = splitShare(count, split, team.share(), team.shares());
         // a pass starts with the thread's own half's colours, which touch only its own bodies,
         // so a thread's work on its bodies needs no meeting before the pass; the colours across
         // touch both halves, so each pass ends with one
