@@ -274,13 +274,14 @@ TEST(SoftKept, AnIslandSplitInHalvesGivesTheSameBitsOnAnyThreadCount)
     // (12.9): a floor of 24 x 24 cubes has more than 1 024 manifolds, so its bodies' halves are
     // swept a thread each; a row of cubes dropped across it keeps the island moving
     std::vector<World> worlds;
+    std::vector<BodyId> cubes;
     for (const int threads : {1, 2, 3}) {
         WorldSettings settings = softSettings();
         settings.threads = threads;
         World world = testing::worldWithGround(settings);
-        addFloor(world, 24);
+        cubes = addFloor(world, 24);
         for (int i = 0; i < 20; ++i) {
-            world.createBody(unitCube(Vec3(1.5 + i, 1.8, 11.5 - 0.5 * i)));
+            cubes.push_back(world.createBody(unitCube(Vec3(1.5 + i, 1.8, 11.5 - 0.5 * i))));
         }
         for (int s = 0; s < 90; ++s) {
             world.step(kDt);
@@ -292,6 +293,18 @@ TEST(SoftKept, AnIslandSplitInHalvesGivesTheSameBitsOnAnyThreadCount)
     }
     EXPECT_EQ(stateHash(worlds[0]), stateHash(worlds[1]));
     EXPECT_EQ(stateHash(worlds[0]), stateHash(worlds[2]));
+    // the island's work, kinetic energy and mass are summed half by half (12.8), so each body's
+    // ledger has the same bits too
+    for (const World& other : {worlds[1], worlds[2]}) {
+        for (const BodyId cube : cubes) {
+            const EnergyLedger& one = worlds[0].body(cube).ledger;
+            const EnergyLedger& more = other.body(cube).ledger;
+            ASSERT_EQ(one.removedByNormal, more.removedByNormal);
+            ASSERT_EQ(one.removedByFriction, more.removedByFriction);
+            ASSERT_EQ(one.exchanged, more.exchanged);
+            ASSERT_EQ(one.removedByIntegration, more.removedByIntegration);
+        }
+    }
 }
 
 } // namespace
