@@ -245,6 +245,37 @@ TEST(SoftStep, APileComesToRestTheSameForAnyThreadsAndItsLedgersBalance)
     }
 }
 
+// (8.4), (12.8): cubes resting side by side on the ground exchange no energy, and each
+// sub-step their contacts take back the speed g h gravity gave them: 1/2 m (g h)^2 a cube a
+// sub-step, booked as normal work, which the warm start's impulses do.
+TEST(SoftStep, CubesSideBySideExchangeNothingAndTheirContactsTakeBackGravitysSpeed)
+{
+    World world = testing::worldWithGround(softSettings());
+    std::vector<BodyId> cubes;
+    for (int i = 0; i < 3; ++i) {
+        cubes.push_back(world.createBody(
+            BodyDef{.shape = Cuboid{Vec3(1.0)},
+                    .position = Vec3(i, 0.5, 0.0),
+                    .material = Material{.restitution = 0.0, .friction = 0.5}}));
+    }
+    const Real dt = 1.0 / 60.0;
+    const int steps = 150;
+    for (int s = 0; s < steps; ++s) {
+        world.step(dt);
+    }
+    const int substeps = world.settings().softSubsteps;
+    const Real h = dt / substeps;
+    const Real perCube = steps * substeps * 0.5 * (kGravity * h) * (kGravity * h);
+    Real exchanged = 0.0;
+    Real normal = 0.0;
+    for (const BodyId cube : cubes) {
+        exchanged += world.body(cube).ledger.exchanged;
+        normal += world.body(cube).ledger.removedByNormal;
+    }
+    EXPECT_NEAR(exchanged, 0.0, 1e-9 * perCube);
+    EXPECT_NEAR(normal, 3.0 * perCube, 1e-3 * perCube);
+}
+
 /// Whether every body's vertical speed after the step that woke them is far below the g dt
 /// a body on no contact would have.
 void expectWokenAndHeld(const World& world, const std::vector<BodyId>& bodies)

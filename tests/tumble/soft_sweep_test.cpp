@@ -101,6 +101,18 @@ struct RandomContact {
     SoftManifold manifold;
 };
 
+/// The bodies' kinetic energy, 1/2 m v.v + 1/2 w.(I w), from their inverse mass and inertia.
+Real kineticEnergyOf(const std::vector<SoftBody>& bodies)
+{
+    Real energy = 0.0;
+    for (const SoftBody& body : bodies) {
+        energy += 0.5 * glm::dot(body.linearVelocity, body.linearVelocity) / body.invMass +
+                  0.5 * glm::dot(body.angularVelocity,
+                                 glm::inverse(body.invInertia) * body.angularVelocity);
+    }
+    return energy;
+}
+
 RandomContact randomContact(std::uint32_t seed)
 {
     std::mt19937_64 random(seed);
@@ -194,9 +206,17 @@ TEST(SoftSweep, TheWarmStartIsEveryRowAppliedThroughItsImages)
         a.angularVelocity -= m.twistImpulse * (a.invInertia * m.normal);
         b.angularVelocity += m.twistImpulse * (b.invInertia * m.normal);
         applyFrictionRows(m, a, b, m.frictionImpulse1, m.frictionImpulse2);
-        const std::vector<SoftManifold> manifolds{m};
+        std::vector<SoftManifold> manifolds{m};
+        const Real kineticBefore = kineticEnergyOf(contact.bodies);
         warmStartSoft(manifolds, contact.bodies, SoftColours{}, 1, nullptr);
         expectSameVelocities(contact.bodies, expected, seed);
+        // (12.8): the work booked for the impulses applied at once is the kinetic change
+        Real work = manifolds[0].frictionWork - m.frictionWork;
+        for (int k = 0; k < m.pointCount; ++k) {
+            work += manifolds[0].points[k].normalWork - m.points[k].normalWork;
+        }
+        const Real change = kineticEnergyOf(contact.bodies) - kineticBefore;
+        EXPECT_NEAR(work, change, 1e-10 * (1.0 + kineticBefore)) << seed;
     }
 }
 

@@ -122,19 +122,30 @@ void solveFriction(SoftPair& pair, SoftManifold& m)
 
 } // namespace
 
-void warmStartSoft(std::span<const SoftManifold> manifolds, std::span<SoftBody> bodies,
+void warmStartSoft(std::span<SoftManifold> manifolds, std::span<SoftBody> bodies,
                    const SoftColours& colours, int threads, SoftLanes* lanes)
 {
     const auto inLanes = [&] { lanes->warmStart(bodies, threads); };
     forEachManifold(manifolds.size(), colours, threads, [&](std::size_t index) {
-        const SoftManifold& m = manifolds[index];
+        SoftManifold& m = manifolds[index];
         SoftPair pair(bodies[m.bodyA], bodies[m.bodyB]);
         std::array<Real, 4> impulses{};
         for (int k = 0; k < m.pointCount; ++k) {
             impulses[k] = m.points[k].normalImpulse;
         }
+        const SoftPair::RowVelocities before = pair.rowVelocities(m);
         pair.applyAccumulated(m, impulses, m.twistImpulse, m.frictionImpulse1,
                               m.frictionImpulse2);
+        const SoftPair::RowVelocities after = pair.rowVelocities(m);
+        // (8.2), (12.8): impulses applied at once do the work of each row's impulse times the
+        // mean of its velocity before and after; the rows' sum is the bodies' kinetic change
+        for (int k = 0; k < m.pointCount; ++k) {
+            SoftPoint& p = m.points[k];
+            p.normalWork += p.normalImpulse * (0.5 * (before.normal[k] + after.normal[k]));
+        }
+        m.frictionWork += m.twistImpulse * (0.5 * (before.spin + after.spin)) +
+                          (m.frictionImpulse1 * (0.5 * (before.slip1 + after.slip1)) +
+                           m.frictionImpulse2 * (0.5 * (before.slip2 + after.slip2)));
         pair.store();
     }, lanes, inLanes);
 }

@@ -171,10 +171,11 @@ struct SoftColours {
 
 class SoftLanes;
 
-/// Applies each manifold's accumulated impulses to its bodies (12.5). With `lanes` (packed with
+/// Applies each manifold's accumulated impulses to its bodies (12.5), and adds their work to
+/// the points' and the manifold's (12.8). With `lanes` (packed with
 /// these colours) the colours are read from and written to the lanes, and `manifolds` holds
 /// only the overflow group, from its first manifold.
-void warmStartSoft(std::span<const SoftManifold> manifolds, std::span<SoftBody> bodies,
+void warmStartSoft(std::span<SoftManifold> manifolds, std::span<SoftBody> bodies,
                    const SoftColours& colours, int threads, SoftLanes* lanes = nullptr);
 
 /// One Gauss-Seidel pass over the manifolds in `colours` order: each point's normal row, soft and biased

@@ -209,4 +209,38 @@ TUMBLE_WIDE_INLINE void solveFriction(LaneBlock& block, LaneVelocities& v)
                                                d2 * (slip2 + splat(0.5) * change2));
 }
 
+/// SoftPair::RowVelocities of each lane, the same operations in the same order.
+struct LaneRowVelocities {
+    LaneNormalVelocities normal;
+    Wide spin, slip1, slip2;
+};
+
+TUMBLE_WIDE_INLINE LaneRowVelocities rowVelocities(const LaneBlock& block,
+                                                   const LaneVelocities& v)
+{
+    const Wide3 sliding = minus(plus(v.vB, cross(v.wB, block.centreB)),
+                                plus(v.vA, cross(v.wA, block.centreA)));
+    return {normalVelocities(block, v), dot(block.normal, minus(v.wB, v.wA)),
+            dot(block.tangent1, sliding), dot(block.tangent2, sliding)};
+}
+
+/// warmStartSoft's work (soft_contact_solver.cpp, (12.8)) lane by lane: each row's impulse
+/// times the mean of its velocity before and after the warm start.
+template <bool EveryPoint>
+TUMBLE_WIDE_INLINE void bookWarmStartWork(LaneBlock& block, const LaneRowVelocities& before,
+                                          const LaneRowVelocities& after)
+{
+    const Wide half = splat(0.5);
+    for (int k = 0; k < 4; ++k) {
+        LanePoint& p = block.points[k];
+        const Wide work = p.normalImpulse * (half * (before.normal.at[k] + after.normal.at[k]));
+        p.normalWork = whereActive<EveryPoint>(p.active, p.normalWork + work, p.normalWork);
+    }
+    block.frictionWork =
+        block.frictionWork +
+        (block.twistImpulse * (half * (before.spin + after.spin)) +
+         (block.frictionImpulse1 * (half * (before.slip1 + after.slip1)) +
+          block.frictionImpulse2 * (half * (before.slip2 + after.slip2))));
+}
+
 } // namespace tumble::soft_rows

@@ -144,14 +144,17 @@ void solveBlocks(std::span<LaneBlock> blocks, std::span<SoftBody> bodies, const 
 
 /// warmStartSoft over blocks, compiled as solveBlocks is.
 TUMBLE_WIDE_CLONES
-void warmStartBlocks(std::span<const LaneBlock> blocks, std::span<SoftBody> bodies)
+void warmStartBlocks(std::span<LaneBlock> blocks, std::span<SoftBody> bodies)
 {
-    for (const LaneBlock& block : blocks) {
+    for (LaneBlock& block : blocks) {
         LaneVelocities v = gatherByRows(block, bodies);
+        const LaneRowVelocities before = rowVelocities(block, v);
         if (block.everyPoint) {
             applyAccumulated<true>(block, v);
+            bookWarmStartWork<true>(block, before, rowVelocities(block, v));
         } else {
             applyAccumulated<false>(block, v);
+            bookWarmStartWork<false>(block, before, rowVelocities(block, v));
         }
         scatterByRows(block, v, bodies);
     }
@@ -279,17 +282,17 @@ void SoftLanes::pack(const ManifoldSource& source, const SoftColours& colours,
     });
 }
 
-void SoftLanes::warmStart(std::span<SoftBody> bodies, int threads) const
+void SoftLanes::warmStart(std::span<SoftBody> bodies, int threads)
 {
-    const Storage& storage = *m_storage;
+    Storage& storage = *m_storage;
     forEachColour(storage, threads, [&](std::size_t first, std::size_t last) {
         warmStartBlocks({storage.blocks.data() + first, last - first}, bodies);
     });
 }
 
-void SoftLanes::warmStart(std::span<SoftBody> bodies, const PhaseTeam& team) const
+void SoftLanes::warmStart(std::span<SoftBody> bodies, const PhaseTeam& team)
 {
-    const Storage& storage = *m_storage;
+    Storage& storage = *m_storage;
     forEachColour(storage, team, [&](std::size_t first, std::size_t last) {
         warmStartBlocks({storage.blocks.data() + first, last - first}, bodies);
     });

@@ -61,7 +61,7 @@ public:
 
     /// warmStartSoft over the colours' manifolds, colour after colour, a large colour shared
     /// over `threads`.
-    void warmStart(std::span<SoftBody> bodies, int threads) const;
+    void warmStart(std::span<SoftBody> bodies, int threads);
 
     /// solveSoft over the colours' manifolds, bit for bit: each lane rounds as the
     /// one-manifold pass does (no fused operations), and a colour's manifolds move disjoint
@@ -71,7 +71,7 @@ public:
 
     /// warmStart and solve by the threads of a team already running (parallelTeam), each
     /// calling them: the colours' phases meet at the team's barrier, and no region is started.
-    void warmStart(std::span<SoftBody> bodies, const PhaseTeam& team) const;
+    void warmStart(std::span<SoftBody> bodies, const PhaseTeam& team);
     void solve(std::span<SoftBody> bodies, const SoftSolveSettings& settings, bool useBias,
                const PhaseTeam& team);
 

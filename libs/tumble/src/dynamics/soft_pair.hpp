@@ -106,6 +106,19 @@ struct SoftPair {
         return u;
     }
 
+    /// The velocities of the manifold's rows (12.8): the points' normal velocities, the spin
+    /// about the normal, and the sliding at the centre along the two tangents.
+    struct RowVelocities {
+        std::array<Real, 4> normal;
+        Real spin, slip1, slip2;
+    };
+    [[nodiscard]] RowVelocities rowVelocities(const SoftManifold& m) const
+    {
+        const Vec3 sliding = centreVelocity(m);
+        return {normalVelocities(m), glm::dot(m.normal, wB - wA), glm::dot(m.tangent1, sliding),
+                glm::dot(m.tangent2, sliding)};
+    }
+
     /// The normal velocity at a point from its angular rows (restitution, (12.6)): n . (vB - vA)
     /// + (rB x n) . wB - (rA x n) . wA.
     [[nodiscard]] Real normalVelocity(const Vec3& normal, const SoftPoint& p) const
