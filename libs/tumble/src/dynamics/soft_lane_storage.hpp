@@ -4,6 +4,7 @@
 
 #include "dynamics/soft_lane_rows.hpp"
 #include "dynamics/soft_lanes.hpp"
+#include "large_buffer.hpp"
 #include "parallel_for.hpp"
 
 #include <algorithm>
@@ -26,40 +27,10 @@ inline constexpr std::size_t kThreadedLaneManifolds = 64;
 
 } // namespace soft_rows
 
-namespace soft_rows {
-
-/// std::allocator, except that an element made without arguments is default-initialised: the
-/// blocks a vector grows by are left unwritten, for their packing threads to write first.
-template <typename T>
-struct DefaultInitAllocator : std::allocator<T> {
-    template <typename U>
-    struct rebind {
-        using other = DefaultInitAllocator<U>;
-    };
-    DefaultInitAllocator() = default;
-    template <typename U>
-    DefaultInitAllocator(const DefaultInitAllocator<U>&) noexcept
-    {
-    }
-    template <typename U>
-    void construct(U* place) noexcept(std::is_nothrow_default_constructible_v<U>)
-    {
-        ::new (static_cast<void*>(place)) U;
-    }
-    template <typename U, typename... Args>
-    void construct(U* place, Args&&... args)
-    {
-        ::new (static_cast<void*>(place)) U(std::forward<Args>(args)...);
-    }
-};
-
-} // namespace soft_rows
-
 struct SoftLanes::Storage {
     /// The last pack's blocks first (soft_rows::blockCountOf), then those of larger islands
     /// packed before it.
-    std::vector<soft_rows::LaneBlock, soft_rows::DefaultInitAllocator<soft_rows::LaneBlock>>
-        blocks;
+    std::vector<soft_rows::LaneBlock, LargeBufferAllocator<soft_rows::LaneBlock>> blocks;
     /// Colour c's blocks are [colourBlocks[c], colourBlocks[c + 1]); its manifold count.
     std::vector<std::size_t> colourBlocks;
     std::vector<std::size_t> colourManifolds;
