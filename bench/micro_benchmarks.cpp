@@ -1,13 +1,18 @@
 // Micro benchmarks: cuboid-plane detection, one contact solve (resting and impact) and one body
-// step (in flight, resting on a face, asleep), on the handout's 2 x 6 x 2, 2 kg cuboid.
+// step (in flight, resting on a face, asleep), on the handout's 2 x 6 x 2, 2 kg cuboid; and the
+// cuboid-cuboid axis search on the pairs of a landing pyramid of 2 m cubes.
 #include "body_state.hpp"
 #include "collision/collide_cuboid_plane.hpp"
+#include "collision/cuboid_separating_axis.hpp"
 #include "dynamics/contact_solver.hpp"
 #include "tumble/world.hpp"
 
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <random>
+#include <utility>
+#include <vector>
 
 namespace {
 
@@ -129,6 +134,56 @@ void bodyStepAsleep(benchmark::State& state)
     }
 }
 BENCHMARK(bodyStepAsleep);
+
+/// Pairs of 2 m cubes as a pyramid's landing meets them, each turned up to 0.05 rad about a
+/// random axis: every other pair stacked (B 2 +- 0.02 m above A, up to 1 m aside, as on the
+/// pyramid's odd layers), the rest side by side 2 +- 0.02 m apart along x or z.
+std::vector<std::pair<CuboidFrame, CuboidFrame>> landingPyramidPairs(int count)
+{
+    std::mt19937 random(1240);
+    std::uniform_real_distribution<Real> unit(-1.0, 1.0);
+    std::uniform_real_distribution<Real> tilt(0.0, 0.05);
+    // one draw per statement: the order of a call's arguments is unspecified
+    const auto draw = [&] {
+        const Real x = unit(random);
+        const Real y = unit(random);
+        return Vec3(x, y, unit(random));
+    };
+    const auto tilted = [&] {
+        const Vec3 axis = glm::normalize(draw());
+        return axisAngle(axis, tilt(random));
+    };
+    std::vector<std::pair<CuboidFrame, CuboidFrame>> pairs;
+    for (int n = 0; n < count; ++n) {
+        const Vec3 centreA = Vec3(15.0, 10.0, 15.0) * draw() + Vec3(0.0, 11.0, 0.0);
+        const Vec3 aside = draw();
+        const Real gap = 0.02 * aside.y;
+        Vec3 offset(2.0 + gap, 0.05 * aside.x, 0.05 * aside.z);
+        if (n % 2 == 0) {
+            offset = Vec3(aside.x, 2.0 + gap, aside.z);
+        } else if (n % 4 == 3) {
+            offset = Vec3(offset.z, offset.y, offset.x);
+        }
+        const Quat orientationA = tilted();
+        const Quat orientationB = tilted();
+        pairs.emplace_back(cuboidFrame({centreA, orientationA}, Vec3(1.0)),
+                           cuboidFrame({centreA + offset, orientationB}, Vec3(1.0)));
+    }
+    return pairs;
+}
+
+void cuboidAxisSearch(benchmark::State& state)
+{
+    // One fresh search (9.1)-(9.5) per iteration, cycling over 1024 pairs.
+    const std::vector<std::pair<CuboidFrame, CuboidFrame>> pairs = landingPyramidPairs(1024);
+    std::size_t next = 0;
+    for (auto _ : state) {
+        const auto& [a, b] = pairs[next];
+        benchmark::DoNotOptimize(searchContactAxis(a, b, 0.02));
+        next = (next + 1) % pairs.size();
+    }
+}
+BENCHMARK(cuboidAxisSearch);
 
 } // namespace
 
