@@ -1,9 +1,8 @@
 // Micro benchmarks: cuboid-plane detection, one contact solve (resting and impact) and one body
 // step (in flight, resting on a face, asleep), on the handout's 2 x 6 x 2, 2 kg cuboid; and the
-// cuboid-cuboid axis search and face clipping on the pairs of a landing pyramid of 2 m cubes.
+// cuboid-cuboid axis search on the pairs of a landing pyramid of 2 m cubes.
 #include "body_state.hpp"
 #include "collision/collide_cuboid_plane.hpp"
-#include "collision/cuboid_face_clipping.hpp"
 #include "collision/cuboid_separating_axis.hpp"
 #include "dynamics/contact_solver.hpp"
 #include "tumble/world.hpp"
@@ -11,7 +10,6 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
-#include <limits>
 #include <random>
 #include <utility>
 #include <vector>
@@ -186,38 +184,6 @@ void cuboidAxisSearch(benchmark::State& state)
     }
 }
 BENCHMARK(cuboidAxisSearch);
-
-/// The reference face of each pair: A's face most nearly facing B's centre.
-std::vector<int> facingFaces(const std::vector<std::pair<CuboidFrame, CuboidFrame>>& pairs)
-{
-    std::vector<int> faces;
-    for (const auto& [a, b] : pairs) {
-        const Vec3 offset = b.centre - a.centre;
-        int best = 0;
-        for (int k = 1; k < 3; ++k) {
-            best = std::abs(glm::dot(a.axes[k], offset)) > std::abs(glm::dot(a.axes[best], offset))
-                       ? k
-                       : best;
-        }
-        faces.push_back(faceIndex(best, glm::dot(a.axes[best], offset) < 0.0));
-    }
-    return faces;
-}
-
-void cuboidFaceClipping(benchmark::State& state)
-{
-    // One clipping of B's face against A's (9.6)-(9.7) per iteration, cycling over 1024 pairs.
-    const std::vector<std::pair<CuboidFrame, CuboidFrame>> pairs = landingPyramidPairs(1024);
-    const std::vector<int> faces = facingFaces(pairs);
-    std::size_t next = 0;
-    for (auto _ : state) {
-        const auto& [a, b] = pairs[next];
-        benchmark::DoNotOptimize(
-            clipIncidentFace(a, faces[next], b, false, std::numeric_limits<Real>::infinity()));
-        next = (next + 1) % pairs.size();
-    }
-}
-BENCHMARK(cuboidFaceClipping);
 
 } // namespace
 

@@ -7,54 +7,47 @@
 namespace tumble {
 namespace {
 
-/// A vertex of the polygon being clipped, in the reference face's frame (9.7): `at` holds its
-/// coordinates along the side axes a_j1, a_j2 and the face normal, from the reference centre.
-/// `features` holds what it lies on: bits 0-3 the incident face's edges (bit m: edge m), bits
-/// 4-7 the reference face's side planes (bit 4 + p: plane p), as faceContactId packs them.
+/// A vertex of the polygon being clipped, with the features it lies on: the incident face's
+/// edges (bit m: edge m) and the reference face's side planes (bit p: plane p).
 struct ClipVertex {
-    std::array<Real, 3> at;
-    unsigned features;
+    Vec3 position{0.0};
+    unsigned edges = 0;
+    unsigned planes = 0;
 };
 
 struct Polygon {
-    std::array<ClipVertex, kMaxClippedPoints> vertices;
+    std::array<ClipVertex, kMaxClippedPoints> vertices{};
     int count = 0;
 };
 
+/// Side plane p of the reference face: the points x with dot(normal, x - centre) <= extent.
 /// A vertex within this share of the half-width of a side plane lies on it (9.7): incident
 /// corners on the reference face's edges up to rounding stay, and an edge along a side is not
 /// cut.
 constexpr Real kOnSidePlane = 1e-9;
 
-/// One Sutherland-Hodgman pass (9.7) by side plane p of half-width `extent`: writes into
-/// `output` the part of the convex polygon `input` inside it. Plane p bounds side coordinate
-/// p % 2, from above for p < 2 and from below for p >= 2: +x_1 <= e_j1, +x_2 <= e_j2,
-/// -x_1 <= e_j1, -x_2 <= e_j2. A vertex within kOnSidePlane of the plane lies on it: it stays,
-/// and no crossing is made next to it. A vertex made on an edge (a, b) lies on the features a
-/// and b share, and on plane p. Returns false, writing nothing, when no vertex lies outside:
-/// the pass would copy `input` as it is.
-bool clipBySide(const Polygon& input, int p, Real extent, Polygon& output)
+struct SidePlane {
+    Vec3 normal{0.0};
+    Real extent = 0.0;
+};
+
+/// One Sutherland-Hodgman pass (9.7): keeps the part of the convex polygon inside the plane.
+/// A vertex within kOnSidePlane of the plane lies on it: it stays, and no crossing is made next
+/// to it. A vertex made on an edge (a, b) lies on the features a and b share, and on plane
+/// `index`.
+Polygon clipByPlane(const Polygon& input, const SidePlane& plane, const Vec3& centre, int index)
 {
-    const int coordinate = p % 2;
-    const Real sign = p < 2 ? 1.0 : -1.0;
-    const Real onPlane = kOnSidePlane * extent;
-    std::array<Real, kMaxClippedPoints> distances;
-    bool outside = false;
+    const Real onPlane = kOnSidePlane * plane.extent;
+    const auto distanceOf = [&](const ClipVertex& v) {
+        const Real distance = glm::dot(plane.normal, v.position - centre) - plane.extent;
+        return std::abs(distance) <= onPlane ? 0.0 : distance;
+    };
+    Polygon output;
     for (int i = 0; i < input.count; ++i) {
-        const Real distance = sign * input.vertices[i].at[coordinate] - extent;
-        distances[i] = std::abs(distance) <= onPlane ? 0.0 : distance;
-        outside = outside || distances[i] > 0.0;
-    }
-    if (!outside) {
-        return false;
-    }
-    output.count = 0;
-    for (int i = 0; i < input.count; ++i) {
-        const int next = i + 1 == input.count ? 0 : i + 1;
         const ClipVertex& a = input.vertices[i];
-        const ClipVertex& b = input.vertices[next];
-        const Real distanceA = distances[i];
-        const Real distanceB = distances[next];
+        const ClipVertex& b = input.vertices[(i + 1) % input.count];
+        const Real distanceA = distanceOf(a);
+        const Real distanceB = distanceOf(b);
         if (distanceA <= 0.0) {
             output.vertices[output.count++] = a;
         }
@@ -62,43 +55,12 @@ bool clipBySide(const Polygon& input, int p, Real extent, Polygon& output)
             // The signs differ, so distanceA - distanceB is not zero.
             const Real t = distanceA / (distanceA - distanceB);
             ClipVertex& crossing = output.vertices[output.count++];
-            for (int k = 0; k < 3; ++k) {
-                crossing.at[k] = a.at[k] + t * (b.at[k] - a.at[k]);
-            }
-            crossing.features = (a.features & b.features) | (1u << (4 + p));
+            crossing.position = a.position + t * (b.position - a.position);
+            crossing.edges = a.edges & b.edges;
+            crossing.planes = (a.planes & b.planes) | (1u << index);
         }
     }
-    return true;
-}
-
-/// The incident face's corners in the reference face's frame (9.7a) (rows: a_j1, a_j2, normal),
-/// in faceCorners' order, each on the two incident edges it bounds: corner m closes edge m - 1
-/// and opens edge m.
-void incidentCorners(const CuboidFrame& reference, const std::array<Vec3, 3>& frame,
-                     const CuboidFrame& incident, int incidentFace, Polygon& polygon)
-{
-    const int axis = faceAxis(incidentFace);
-    const int i1 = (axis + 1) % 3;
-    const int i2 = (axis + 2) % 3;
-    const Vec3 offset = incident.centre +
-                        faceSign(incidentFace) * incident.halfExtents[axis] * incident.axes[axis] -
-                        reference.centre;
-    const Vec3 u = incident.halfExtents[i1] * incident.axes[i1];
-    const Vec3 v = incident.halfExtents[i2] * incident.axes[i2];
-    constexpr std::array<Real, 4> kSignU{-1.0, 1.0, 1.0, -1.0};
-    constexpr std::array<Real, 4> kSignV{-1.0, -1.0, 1.0, 1.0};
-    polygon.count = 4;
-    for (int k = 0; k < 3; ++k) {
-        const Real centreAt = glm::dot(frame[k], offset);
-        const Real uAt = glm::dot(frame[k], u);
-        const Real vAt = glm::dot(frame[k], v);
-        for (int m = 0; m < 4; ++m) {
-            polygon.vertices[m].at[k] = centreAt + kSignU[m] * uAt + kSignV[m] * vAt;
-        }
-    }
-    for (int m = 0; m < 4; ++m) {
-        polygon.vertices[m].features = (1u << m) | (1u << ((m + 3) % 4));
-    }
+    return output;
 }
 
 /// Twice the signed area of the triangle (a, b, c) seen along `normal`.
@@ -149,40 +111,41 @@ int incidentFaceIndex(const CuboidFrame& box, const Vec3& referenceNormal)
 ClippedPoints clipIncidentFace(const CuboidFrame& reference, int referenceFace,
                                const CuboidFrame& incident, bool referenceIsB, Real margin)
 {
-    const Vec3 normal = faceNormal(reference, referenceFace);
-    const int incidentFace = incidentFaceIndex(incident, normal);
+    const int incidentFace = incidentFaceIndex(incident, faceNormal(reference, referenceFace));
+    const std::array<Vec3, 4> corners = faceCorners(incident, incidentFace);
+    Polygon polygon;
+    polygon.count = 4;
+    for (int m = 0; m < 4; ++m) {
+        // Corner m closes edge m - 1 and opens edge m.
+        polygon.vertices[m] = ClipVertex{corners[m], (1u << m) | (1u << ((m + 3) % 4)), 0u};
+    }
     const int axis = faceAxis(referenceFace);
     const int j1 = (axis + 1) % 3;
     const int j2 = (axis + 2) % 3;
-    const std::array<Vec3, 3> frame{reference.axes[j1], reference.axes[j2], normal};
-    // Clipped back and forth between two polygons: a pass that cuts reads one and writes the
-    // other.
-    std::array<Polygon, 2> polygons;
-    incidentCorners(reference, frame, incident, incidentFace, polygons[0]);
-    int current = 0;
-    for (int p = 0; p < 4 && polygons[current].count > 0; ++p) {
-        if (clipBySide(polygons[current], p, reference.halfExtents[p % 2 == 0 ? j1 : j2],
-                       polygons[1 - current])) {
-            current = 1 - current;
-        }
+    const std::array<SidePlane, 4> sides{
+        SidePlane{reference.axes[j1], reference.halfExtents[j1]},
+        SidePlane{reference.axes[j2], reference.halfExtents[j2]},
+        SidePlane{-reference.axes[j1], reference.halfExtents[j1]},
+        SidePlane{-reference.axes[j2], reference.halfExtents[j2]},
+    };
+    for (int p = 0; p < 4 && polygon.count > 0; ++p) {
+        polygon = clipByPlane(polygon, sides[p], reference.centre, p);
     }
-    // (9.7): separation below the reference face; the point reported midway between surfaces,
-    // x - (s/2) n = c_R + x_1 a_j1 + x_2 a_j2 + (e_k + s/2) n.
+    // (9.7): separation below the reference face; the point reported midway between surfaces.
+    const Vec3 normal = faceNormal(reference, referenceFace);
     const Real faceOffset = reference.halfExtents[axis];
-    const Polygon& polygon = polygons[current];
     ClippedPoints clipped;
     for (int i = 0; i < polygon.count; ++i) {
         const ClipVertex& vertex = polygon.vertices[i];
-        const Real separation = vertex.at[2] - faceOffset;
+        const Real separation = glm::dot(normal, vertex.position - reference.centre) - faceOffset;
         if (separation > margin) {
             continue;
         }
         PairContactPoint& point = clipped.points[clipped.count++];
-        point.position = reference.centre + vertex.at[0] * frame[0] + vertex.at[1] * frame[1] +
-                         (faceOffset + 0.5 * separation) * normal;
+        point.position = vertex.position - 0.5 * separation * normal;
         point.separation = separation;
-        point.id = faceContactId(referenceIsB, referenceFace, incidentFace,
-                                 vertex.features & 0xFu, vertex.features >> 4);
+        point.id = faceContactId(referenceIsB, referenceFace, incidentFace, vertex.edges,
+                                 vertex.planes);
     }
     return clipped;
 }
