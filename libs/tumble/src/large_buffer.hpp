@@ -51,7 +51,8 @@ struct LargeBufferAllocator : std::allocator<T> {
             std::allocator<T>::deallocate(data, count);
             return;
         }
-        ::operator delete(data, hugePagesFor(bytes), std::align_val_t{kHugePageBytes});
+        // the unsized form: clang declares the sized one only with -fsized-deallocation
+        ::operator delete(data, std::align_val_t{kHugePageBytes});
     }
 
     template <typename U>
